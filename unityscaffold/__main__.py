@@ -1,0 +1,5 @@
+import sys
+
+from unityscaffold.cli import main
+
+sys.exit(main())
