@@ -125,11 +125,16 @@ class TypeRef:
 
 @dataclass(frozen=True, slots=True)
 class Field:
-    """One field of a message. ``default`` exists in ROS 2 only."""
+    """One field of a message. ``default`` exists in ROS 2 only.
+
+    ``type_text`` is the type as the dialect's reference tool keeps it after resolving names
+    (genmsg puts it, array suffix included, into the md5 text of builtin fields).
+    """
 
     type: TypeRef
     name: str
     default: Value | None = None
+    type_text: str = ""
     comment: tuple[str, ...] = ()
     location: SourceLocation | None = field(default=None, compare=False, repr=False)
 

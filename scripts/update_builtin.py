@@ -1,0 +1,59 @@
+"""Refresh the built-in interface definitions shipped with unityscaffold.
+
+The built-in set lets the standard interfaces resolve on a machine with no ROS installed. It is
+copied verbatim (definitions are data; their texts decide md5sums) from:
+  ROS 1 Noetic: Debian's ros-*-msgs packages under /usr/share (see .ci/run for the list);
+  ROS 2 Jazzy: the PyPI ros-jazzy-* interface wheels installed in this Python's prefix.
+Run: python3 scripts/update_builtin.py, then review `git diff --stat`.
+"""
+
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+TARGET = ROOT / "unityscaffold" / "interfaces" / "builtin"
+ROS1_PACKAGES = (
+    "actionlib_msgs diagnostic_msgs geometry_msgs map_msgs move_base_msgs nav_msgs pcl_msgs "
+    "roscpp rosgraph_msgs sensor_msgs shape_msgs std_msgs std_srvs stereo_msgs tf2_msgs "
+    "topic_tools trajectory_msgs visualization_msgs"
+).split()
+ROS2_EXCLUDED = {"test_msgs"}  # a grammar torture set, not something robots use
+
+
+def copy_package(source: Path, target: Path) -> int:
+    count = 0
+    for kind in ("msg", "srv", "action"):
+        files = sorted((source / kind).glob(f"*.{kind}")) if (source / kind).is_dir() else []
+        for file in files:
+            dest = target / kind / file.name
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(file, dest)
+            count += 1
+    return count
+
+
+def main() -> int:
+    for dialect in ("ros1", "ros2"):
+        shutil.rmtree(TARGET / dialect, ignore_errors=True)
+    total = 0
+    for name in ROS1_PACKAGES:
+        source = Path("/usr/share") / name
+        if not source.is_dir():
+            print(f"missing ROS 1 package {source}", file=sys.stderr)
+            return 1
+        total += copy_package(source, TARGET / "ros1" / name)
+    share = Path(sys.prefix) / "share"
+    for source in sorted(share.iterdir()):
+        if source.name in ROS2_EXCLUDED or not (source / "package.xml").is_file():
+            continue
+        if any((source / kind).is_dir() for kind in ("msg", "srv", "action")):
+            total += copy_package(source, TARGET / "ros2" / source.name)
+    print(f"copied {total} definition files into {TARGET}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
