@@ -1,0 +1,124 @@
+"""ROS 2 type identity: the RIHS01 type hash (REP 2011), as rosidl_generator_type_description computes it.
+
+The hash is the sha256 of a JSON text: the type's description (name, and each field's name and
+type as ``type_id``/``capacity``/``string_capacity``/``nested_type_name``) followed by the
+descriptions of every type it refers to, sorted by name; default values are left out. A
+service is described as a type with ``request_message``, ``response_message`` and
+``event_message`` fields; an action with its goal, result, feedback, two services and feedback
+message.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from typing import Any
+
+from unityscaffold.interfaces.model import (
+    ActionSpec,
+    ArrayKind,
+    Field,
+    Interface,
+    MessageSpec,
+    ServiceSpec,
+    TypeRef,
+)
+from unityscaffold.interfaces.registry import Registry
+
+__all__ = ["Ros2Identity"]
+
+_TYPE_IDS = {
+    "int8": 2, "uint8": 3, "int16": 4, "uint16": 5, "int32": 6, "uint32": 7, "int64": 8,
+    "uint64": 9, "float32": 10, "float64": 11, "char": 3, "bool": 15, "byte": 16,
+    "string": 17, "wstring": 18,
+}  # fmt: skip
+_NESTED = 1
+_BOUNDED_STRING_OFFSET = 4  # string 17 -> bounded string 21, wstring 18 -> 22
+_ARRAY_OFFSETS = {ArrayKind.NONE: 0, ArrayKind.FIXED: 48, ArrayKind.BOUNDED: 96,
+                  ArrayKind.UNBOUNDED: 144}  # fmt: skip
+_EMPTY_PLACEHOLDER = Field(TypeRef("uint8"), "structure_needs_at_least_one_member")
+
+_Description = dict[str, Any]
+
+
+def _field_type(ref: TypeRef) -> dict[str, Any]:
+    if ref.is_message:
+        type_id = _NESTED
+    else:
+        type_id = _TYPE_IDS[ref.base]
+        if ref.string_bound is not None:
+            type_id += _BOUNDED_STRING_OFFSET
+    return {
+        "type_id": type_id + _ARRAY_OFFSETS[ref.array],
+        "capacity": ref.size or 0,
+        "string_capacity": ref.string_bound or 0,
+        "nested_type_name": ref.base if ref.is_message else "",
+    }
+
+
+def _describe(name: str, fields: tuple[Field, ...]) -> _Description:
+    return {
+        "type_name": name,
+        "fields": [{"name": f.name, "type": _field_type(f.type)} for f in fields or (_EMPTY_PLACEHOLDER,)],
+    }
+
+
+def _nested(name: str) -> Field:
+    return Field(TypeRef(name), "")
+
+
+class Ros2Identity:
+    """RIHS01 hashes over one registry."""
+
+    def __init__(self, registry: Registry) -> None:
+        self.registry = registry
+
+    def _pseudo_fields(self, interface: Interface) -> tuple[Field, ...]:
+        """The fields rosidl gives a service or action type to describe it."""
+        if isinstance(interface, MessageSpec):
+            return interface.fields
+        if isinstance(interface, ServiceSpec):
+            assert interface.event is not None
+            parts = (("request_message", interface.request), ("response_message", interface.response),
+                     ("event_message", interface.event))
+            return tuple(Field(TypeRef(p.full_name), n) for n, p in parts)
+        parts = (("goal", interface.goal), ("result", interface.result), ("feedback", interface.feedback),
+                 ("send_goal_service", interface.services[0]),
+                 ("get_result_service", interface.services[1]),
+                 ("feedback_message", interface.derived[0]))  # fmt: skip
+        return tuple(Field(TypeRef(p.full_name), n) for n, p in parts)
+
+    def _local_types(self, interface: Interface) -> dict[str, Interface]:
+        """Types defined inside ``interface`` that the registry cannot look up by name."""
+        local: dict[str, Interface] = {}
+        if isinstance(interface, ActionSpec):
+            for service in interface.services:
+                local[service.full_name] = service
+            for message in interface.messages:
+                local[message.full_name] = message
+        elif isinstance(interface, ServiceSpec):
+            for message in interface.parts:
+                local[message.full_name] = message
+        return local
+
+    def description(self, interface: Interface) -> dict[str, Any]:
+        """The hashed form: the type's description and its sorted referenced descriptions."""
+        local = self._local_types(interface)
+        referenced: dict[str, _Description] = {}
+        pending = [f.type.base for f in self._pseudo_fields(interface) if f.type.is_message]
+        while pending:
+            name = pending.pop()
+            if name in referenced:
+                continue
+            node = local.get(name) or self.registry.message(name)
+            fields = self._pseudo_fields(node)
+            referenced[name] = _describe(name, fields)
+            pending += [f.type.base for f in fields if f.type.is_message]
+        return {
+            "type_description": _describe(interface.full_name, self._pseudo_fields(interface)),
+            "referenced_type_descriptions": [referenced[n] for n in sorted(referenced)],
+        }
+
+    def type_hash(self, interface: Interface) -> str:
+        text = json.dumps(self.description(interface), ensure_ascii=True, separators=(", ", ": "))
+        return "RIHS01_" + hashlib.sha256(text.encode("utf-8")).hexdigest()

@@ -1,0 +1,285 @@
+"""All interface types of one dialect: lookup by name, dependency closure, diagnostics.
+
+Files are indexed up front (a directory listing) and parsed on first use, so looking up one
+type does not parse every package on the machine.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
+from unityscaffold.interfaces import ros1, ros2
+from unityscaffold.interfaces.model import (
+    ActionSpec,
+    Dialect,
+    Field,
+    Interface,
+    InterfaceKind,
+    MessageSpec,
+    ServiceSpec,
+)
+from unityscaffold.interfaces.sources import InterfaceFile, SearchRoot, discover, search_roots
+
+__all__ = ["Registry", "TypeNotFound"]
+
+_PARSERS = {
+    Dialect.ROS1: {InterfaceKind.MSG: ros1.parse_message, InterfaceKind.SRV: ros1.parse_service,
+                   InterfaceKind.ACTION: ros1.parse_action},
+    Dialect.ROS2: {InterfaceKind.MSG: ros2.parse_message, InterfaceKind.SRV: ros2.parse_service,
+                   InterfaceKind.ACTION: ros2.parse_action},
+}  # fmt: skip
+# Names of the messages a ROS 1 service or action defines, longest suffix first.
+_ROS1_PART_SUFFIXES = (
+    (InterfaceKind.ACTION, "ActionFeedback"), (InterfaceKind.ACTION, "ActionResult"),
+    (InterfaceKind.ACTION, "ActionGoal"), (InterfaceKind.SRV, "Response"),
+    (InterfaceKind.SRV, "Request"), (InterfaceKind.ACTION, "Feedback"),
+    (InterfaceKind.ACTION, "Result"), (InterfaceKind.ACTION, "Action"),
+    (InterfaceKind.ACTION, "Goal"),
+)  # fmt: skip
+
+
+class TypeNotFound(UserError):
+    """A type name that no search root defines."""
+
+
+@dataclass(frozen=True, slots=True)
+class _Key:
+    kind: InterfaceKind
+    package: str
+    name: str
+
+
+class Registry:
+    """The interface types visible to one dialect, first definition winning."""
+
+    def __init__(self, dialect: Dialect, roots: Sequence[SearchRoot]) -> None:
+        self.dialect = dialect
+        self.roots = list(roots)
+        self._files: dict[_Key, InterfaceFile] = {}
+        self._shadowed: dict[_Key, list[InterfaceFile]] = {}
+        self._parsed: dict[Path, Interface] = {}
+        self._broken: dict[Path, LocatedError] = {}
+        for package in discover(self.roots):
+            for file in package.files():
+                key = _Key(file.kind, file.package, file.name)
+                if key in self._files:
+                    self._shadowed.setdefault(key, []).append(file)
+                else:
+                    self._files[key] = file
+
+    @classmethod
+    def load(
+        cls,
+        dialect: Dialect,
+        paths: Sequence[Path | str] = (),
+        *,
+        environ: Mapping[str, str] | None = None,
+        use_environment: bool = True,
+        use_builtin: bool = True,
+    ) -> Registry:
+        """Index every package visible for ``dialect``, user ``paths`` first."""
+        missing = [str(p) for p in paths if not Path(p).is_dir()]
+        if missing:
+            raise UserError(f"interface folder not found: {', '.join(missing)}",
+                            hint="pass folders that contain ROS packages (with msg/, srv/ or action/)")
+        roots = search_roots(dialect, paths, environ=environ, use_environment=use_environment,
+                             use_builtin=use_builtin)
+        return cls(dialect, roots)
+
+    # --- files ----------------------------------------------------------------------------
+
+    def files(self) -> list[InterfaceFile]:
+        """Every winning interface file, sorted by package, kind and name."""
+        return sorted(self._files.values(), key=lambda f: (f.package, f.kind.value, f.name))
+
+    def packages(self) -> list[str]:
+        return sorted({key.package for key in self._files})
+
+    def shadowed(self, interface: Interface) -> list[InterfaceFile]:
+        """Files that define the same type but lost to ``interface``'s file."""
+        return list(self._shadowed.get(_Key(interface.kind, interface.package, interface.name), []))
+
+    def parse(self, file: InterfaceFile) -> Interface:
+        """Parse one file (once); raises ``LocatedError`` when it is malformed."""
+        if file.path in self._parsed:
+            return self._parsed[file.path]
+        if file.path in self._broken:
+            raise self._broken[file.path]
+        try:
+            text = file.path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            error = LocatedError.at(SourceLocation(str(file.path)), f"cannot read: {exc}")
+            self._broken[file.path] = error
+            raise error from None
+        try:
+            parsed = _PARSERS[self.dialect][file.kind](text, file.package, file.name, str(file.path))
+        except LocatedError as error:
+            self._broken[file.path] = error
+            raise
+        self._parsed[file.path] = parsed
+        return parsed
+
+    def parse_all(self) -> tuple[list[Interface], list[Diagnostic]]:
+        """Every type that parses, and the diagnostics of the files that do not."""
+        good: list[Interface] = []
+        problems: list[Diagnostic] = []
+        for file in self.files():
+            try:
+                good.append(self.parse(file))
+            except LocatedError as error:
+                problems.extend(error.diagnostics)
+        return good, problems
+
+    # --- lookup ---------------------------------------------------------------------------
+
+    def _file(self, kind: InterfaceKind, package: str, name: str) -> InterfaceFile | None:
+        return self._files.get(_Key(kind, package, name))
+
+    def find(self, name: str) -> Interface | None:
+        """The message, service or action called ``name``, in any form users type."""
+        parts = name.strip().split("/")
+        if len(parts) == 3 and parts[1] in {k.value for k in InterfaceKind}:
+            package, kind, short = parts[0], InterfaceKind(parts[1]), parts[2]
+            if self.dialect is Dialect.ROS2:
+                return self._find_ros2(package, kind, short)
+            return self._find_in(package, short, (kind,))
+        if len(parts) != 2 or not all(parts):
+            return None
+        kinds = tuple(InterfaceKind)
+        return self._find_in(parts[0], parts[1], kinds)
+
+    def _find_in(self, package: str, short: str, kinds: Iterable[InterfaceKind]) -> Interface | None:
+        for kind in kinds:
+            file = self._file(kind, package, short)
+            if file is not None:
+                return self.parse(file)
+        return self._find_part(package, short)
+
+    def _find_ros2(self, package: str, kind: InterfaceKind, short: str) -> Interface | None:
+        file = self._file(kind, package, short)
+        if file is not None:
+            return self.parse(file)
+        if kind is InterfaceKind.MSG:
+            return None
+        owner_name = short.rsplit("_", 1)[0]
+        for candidate in (owner_name, owner_name.rsplit("_", 1)[0]):
+            owner_file = self._file(kind, package, candidate)
+            if owner_file is not None:
+                owner = self.parse(owner_file)
+                return _part_named(owner, short)
+        return None
+
+    def _find_part(self, package: str, short: str) -> MessageSpec | None:
+        """A ROS 1 service half or action message, such as ``AddTwoIntsRequest``."""
+        if self.dialect is not Dialect.ROS1:
+            return None
+        for kind, suffix in _ROS1_PART_SUFFIXES:
+            if short.endswith(suffix) and len(short) > len(suffix):
+                file = self._file(kind, package, short[: -len(suffix)])
+                if file is not None:
+                    return _part_named(self.parse(file), short)
+        return None
+
+    def get(self, name: str, *, used_at: SourceLocation | None = None) -> Interface:
+        """Like ``find``, but an unknown name raises ``TypeNotFound`` with suggestions."""
+        found = self.find(name)
+        if found is None:
+            raise self._not_found(name, used_at)
+        return found
+
+    def message(self, full_name: str, *, used_at: SourceLocation | None = None) -> MessageSpec:
+        """The message with this full name (as field types store it)."""
+        found = self.get(full_name, used_at=used_at)
+        if not isinstance(found, MessageSpec):
+            raise self._not_found(full_name, used_at, note=f"'{full_name}' is a {found.kind.value}, "
+                                  "not a message")
+        return found
+
+    def known_names(self) -> list[str]:
+        names = set()
+        for key in self._files:
+            names.add(f"{key.package}/{key.name}")
+            if self.dialect is Dialect.ROS2:
+                names.add(f"{key.package}/{key.kind.value}/{key.name}")
+        return sorted(names)
+
+    def _not_found(self, name: str, used_at: SourceLocation | None, note: str = "") -> UserError:
+        close = difflib.get_close_matches(name, self.known_names(), n=3, cutoff=0.6)
+        looked = ", ".join(f"{r.path} ({r.origin})" for r in self.roots)
+        hint = f"did you mean {' or '.join(close)}? " if close else ""
+        hint += f"looked in: {looked}"
+        message = note or f"unknown {self.dialect.label} type '{name}'"
+        if used_at is not None:
+            return LocatedError.at(used_at, message, hint=hint)
+        return TypeNotFound(message, hint=hint)
+
+    # --- dependencies ---------------------------------------------------------------------
+
+    def field_type(self, owner: MessageSpec, field: Field) -> MessageSpec:
+        """The message a field of ``owner`` refers to."""
+        return self.message(field.type.base, used_at=field.location)
+
+    def closure(self, roots: Iterable[Interface]) -> list[MessageSpec]:
+        """Every message the roots define or use, directly or not, sorted by full name.
+
+        Unknown types and cycles are all reported at once, each at the field that uses them.
+        """
+        found: dict[str, MessageSpec] = {}
+        problems: list[Diagnostic] = []
+        for root in roots:
+            for message in _messages_of(root):
+                self._visit(message, found, [], problems)
+        if problems:
+            raise LocatedError(_unique(problems))
+        return [found[name] for name in sorted(found)]
+
+    def _visit(self, message: MessageSpec, found: dict[str, MessageSpec], path: list[str],
+               problems: list[Diagnostic]) -> None:
+        if message.full_name in found:
+            return
+        if message.full_name in path:
+            cycle = " -> ".join([*path[path.index(message.full_name) :], message.full_name])
+            where = SourceLocation(message.source or message.full_name)
+            problems.append(Diagnostic(where, f"types refer to each other in a cycle: {cycle}",
+                                       hint="ROS messages cannot contain themselves"))
+            return
+        path.append(message.full_name)
+        for field in message.fields:
+            if not field.type.is_message:
+                continue
+            try:
+                dependency = self.field_type(message, field)
+            except LocatedError as error:
+                problems.extend(error.diagnostics)
+                continue
+            except UserError as error:
+                where = field.location or SourceLocation(message.source or message.full_name)
+                problems.append(Diagnostic(where, error.message, hint=error.hint))
+                continue
+            self._visit(dependency, found, path, problems)
+        path.pop()
+        found[message.full_name] = message
+
+
+def _messages_of(interface: Interface) -> tuple[MessageSpec, ...]:
+    if isinstance(interface, MessageSpec):
+        return (interface,)
+    if isinstance(interface, ServiceSpec):
+        return interface.parts
+    return interface.messages
+
+
+def _part_named(owner: Interface, name: str) -> MessageSpec | None:
+    if isinstance(owner, ServiceSpec | ActionSpec):
+        for part in _messages_of(owner):
+            if part.name == name:
+                return part
+    return None
+
+
+def _unique(problems: list[Diagnostic]) -> list[Diagnostic]:
+    return list(dict.fromkeys(problems))
