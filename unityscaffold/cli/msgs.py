@@ -6,3 +6,7 @@ import typer
 
 app = typer.Typer(help="List, show and generate ROS message, service and action types.",
                   no_args_is_help=True)
+
+from unityscaffold.cli import msgs_gen  # noqa: E402
+
+msgs_gen.register(app)

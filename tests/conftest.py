@@ -1,0 +1,62 @@
+"""Shared fixtures: the real tools and data the tests run against.
+
+A missing tool or data set skips a test on a developer machine, and fails it in CI
+(``CI=true``), where ``.ci/run`` must have installed everything.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+IN_CI = os.environ.get("CI", "").lower() == "true"
+REPO = Path(__file__).resolve().parent.parent
+ROS1_SHARE = Path("/usr/share")
+ROS2_SHARE = Path(sys.prefix) / "share"
+SYSTEM_PYTHON = Path("/usr/bin/python3")
+
+
+def require(available: object, what: str) -> None:
+    """Skip (locally) or fail (in CI) when ``what`` is not available."""
+    if available:
+        return
+    if IN_CI:
+        pytest.fail(f"{what} is missing: .ci/run must install it")
+    pytest.skip(f"{what} is not installed")
+
+
+@pytest.fixture(scope="session")
+def mcs() -> str:
+    path = shutil.which("mcs")
+    require(path, "Mono's C# compiler mcs (Debian package mono-mcs)")
+    assert path
+    return path
+
+
+@pytest.fixture(scope="session")
+def ros1_share() -> Path:
+    require((ROS1_SHARE / "std_msgs" / "msg").is_dir() and (ROS1_SHARE / "std_srvs" / "srv").is_dir(),
+            "Debian's ROS 1 interface packages (ros-*-msgs, ros-std-srvs)")
+    return ROS1_SHARE
+
+
+@pytest.fixture(scope="session")
+def ros2_share() -> Path:
+    require((ROS2_SHARE / "test_msgs" / "msg").is_dir()
+            and (ROS2_SHARE / "std_msgs" / "msg").is_dir(),
+            "the ROS 2 Jazzy interface wheels (ros-jazzy-common-interfaces, ros-jazzy-test-msgs)")
+    return ROS2_SHARE
+
+
+@pytest.fixture(scope="session")
+def genmsg_python() -> Path:
+    works = SYSTEM_PYTHON.exists() and subprocess.run(
+        [str(SYSTEM_PYTHON), "-c", "import genmsg"], capture_output=True
+    ).returncode == 0
+    require(works, "Debian's python3-genmsg under /usr/bin/python3")
+    return SYSTEM_PYTHON
