@@ -2,10 +2,129 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+from typing import Any
+
 import typer
 
-app = typer.Typer(help="List, show and generate ROS message, service and action types.",
-                  no_args_is_help=True)
+from unityscaffold.cli._options import JsonOption, PathOption, RosOption, dialect_of
+from unityscaffold.errors import Exit, LocatedError
+from unityscaffold.interfaces.describe import Describer
+from unityscaffold.interfaces.registry import Registry
+
+app = typer.Typer(
+    help="List, show and generate ROS message, service and action types.",
+    no_args_is_help=True,
+)
+
+
+def _print_json(data: Any) -> None:
+    typer.echo(json.dumps(data, indent=2, ensure_ascii=False))
+
+
+def _indent(text: str, prefix: str = "    ") -> str:
+    return "\n".join(prefix + line if line else line for line in text.split("\n"))
+
+
+@app.command("list")
+def list_types(
+    package: str | None = typer.Option(None, "--package", "-p", help="Only this package."),
+    ros: int | None = RosOption,
+    path: list[Path] = PathOption,
+    as_json: bool = JsonOption,
+) -> None:
+    """List every known type, grouped by package, with where it was found.
+
+    A malformed file is reported (file:line:col) without hiding the good types; the exit
+    status is then 2.
+    """
+    registry = Registry.load(dialect_of(ros), path)
+    files = [f for f in registry.files() if package is None or f.package == package]
+    if package is not None and not files:
+        from unityscaffold.errors import UserError
+
+        raise UserError(f"no package '{package}' found",
+                        hint="known packages: " + ", ".join(registry.packages()))
+    problems: list[str] = []
+    groups: dict[str, dict[str, Any]] = {}
+    for file in files:
+        try:
+            registry.parse(file)
+        except LocatedError as error:
+            problems.append(error.render())
+            continue
+        group = groups.setdefault(file.package, {"package": file.package,
+                                                 "path": str(file.path.parent.parent),
+                                                 "origin": file.origin, "types": []})
+        group["types"].append({"type": f"{file.package}/{file.name}", "kind": file.kind.value})
+    if as_json:
+        _print_json(list(groups.values()))
+    else:
+        for group in groups.values():
+            typer.echo(f"{group['package']}  ({group['path']}, {group['origin']})")
+            for entry in group["types"]:
+                typer.echo(f"  {entry['kind']:<6} {entry['type']}")
+    for problem in problems:
+        typer.echo(problem, err=True)
+    if problems:
+        raise typer.Exit(int(Exit.USER_ERROR))
+
+
+def _show_text(describer: Describer, data: dict[str, Any], registry: Registry) -> None:
+    interface = registry.get(data["type"])
+    typer.echo(f"{data['type']}  ({data['kind']}, {registry.dialect.label})")
+    file = registry.file_of(interface)
+    origin = f" ({file.origin})" if file else ""
+    typer.echo(f"  source:     {data['source']}{origin}")
+    for other in registry.shadowed(interface):
+        typer.echo(f"  not used:   {other.path} ({other.origin}), defines the same type")
+    identity = describer.identity(interface)
+    if identity["md5sum"]:
+        typer.echo(f"  md5sum:     {identity['md5sum']}")
+    if identity["type_hash"]:
+        typer.echo(f"  type hash:  {identity['type_hash']}")
+    for part in ("request", "response", "goal", "result", "feedback"):
+        if part in data:
+            sub = data[part]
+            suffix = f"  md5sum {sub['md5sum']}" if sub["md5sum"] else ""
+            typer.echo(f"  {part}:{' ' * (10 - len(part))}{sub['type']}{suffix}")
+    _fields_text(data)
+    typer.echo("  definition:")
+    typer.echo(_indent(data["definition"]))
+
+
+def _fields_text(data: dict[str, Any]) -> None:
+    for constant in data["constants"]:
+        typer.echo(f"  const  {constant['type']} {constant['name']} = {constant['text']}")
+    for field in data["fields"]:
+        default = f" = {field['default']!r}" if field["default"] is not None else ""
+        typer.echo(f"  field  {field['type']} {field['name']}{default}")
+
+
+@app.command("show")
+def show(
+    types: list[str] = typer.Argument(..., metavar="TYPE...",
+                                      help="Types such as geometry_msgs/Twist or std_srvs/Trigger."),
+    ros: int | None = RosOption,
+    path: list[Path] = PathOption,
+    as_json: bool = JsonOption,
+) -> None:
+    """Show types: fields, constants, source file, md5sum (ROS 1) or type hash (ROS 2), definition.
+
+    Service halves are accepted as types too: pkg/SrvRequest (ROS 1), pkg/srv/Srv_Request (ROS 2).
+    """
+    registry = Registry.load(dialect_of(ros), path)
+    describer = Describer(registry)
+    described = [describer.describe(registry.get(name)) for name in types]
+    if as_json:
+        _print_json(described)
+        return
+    for index, data in enumerate(described):
+        if index:
+            typer.echo()
+        _show_text(describer, data, registry)
+
 
 from unityscaffold.cli import msgs_gen  # noqa: E402
 

@@ -99,6 +99,15 @@ class Registry:
     def packages(self) -> list[str]:
         return sorted({key.package for key in self._files})
 
+    def file_of(self, interface: Interface) -> InterfaceFile | None:
+        """The file that defines ``interface`` (for a service half: the service's file)."""
+        owner = interface.owner if isinstance(interface, MessageSpec) and interface.owner else None
+        if owner is not None:
+            found = self.find(owner)
+            if found is not None and found is not interface:
+                return self.file_of(found)
+        return self._files.get(_Key(interface.kind, interface.package, interface.name))
+
     def shadowed(self, interface: Interface) -> list[InterfaceFile]:
         """Files that define the same type but lost to ``interface``'s file."""
         return list(self._shadowed.get(_Key(interface.kind, interface.package, interface.name), []))
@@ -149,8 +158,12 @@ class Registry:
             return self._find_in(package, short, (kind,))
         if len(parts) != 2 or not all(parts):
             return None
-        kinds = tuple(InterfaceKind)
-        return self._find_in(parts[0], parts[1], kinds)
+        kinds = [k for k in InterfaceKind if self._file(k, parts[0], parts[1]) is not None]
+        if len(kinds) > 1:
+            spelled = " or ".join(f"{parts[0]}/{k.value}/{parts[1]}" for k in kinds)
+            raise UserError(f"'{name}' names both a {' and a '.join(k.value for k in kinds)}",
+                            hint=f"write {spelled}")
+        return self._find_in(parts[0], parts[1], kinds or ())
 
     def _find_in(self, package: str, short: str, kinds: Iterable[InterfaceKind]) -> Interface | None:
         for kind in kinds:

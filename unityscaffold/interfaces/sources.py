@@ -48,6 +48,7 @@ class InterfaceFile:
     name: str
     kind: InterfaceKind
     path: Path
+    origin: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -66,7 +67,8 @@ class PackageDir:
                 continue
             for entry in entries:
                 if entry.endswith(kind.suffix) and not entry.startswith("."):
-                    yield InterfaceFile(self.name, entry[: -len(kind.suffix)], kind, folder / entry)
+                    yield InterfaceFile(self.name, entry[: -len(kind.suffix)], kind, folder / entry,
+                                        self.origin)
 
 
 def builtin_root(dialect: Dialect) -> Path:

@@ -1,0 +1,105 @@
+"""Every Jazzy interface: our parse equals rosidl_adapter's, and our type hashes equal the shipped JSON."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from unityscaffold.interfaces.identity_ros2 import Ros2Identity
+from unityscaffold.interfaces.model import ActionSpec, Dialect, MessageSpec, ServiceSpec
+from unityscaffold.interfaces.registry import Registry
+
+
+
+@pytest.fixture(scope="module")
+def registry(ros2_share) -> Registry:
+    packages = sorted(p.parent for p in ros2_share.glob("*/package.xml")
+                      if any((p.parent / k).is_dir() for k in ("msg", "srv", "action")))
+    return Registry.load(Dialect.ROS2, packages, use_environment=False, use_builtin=False)
+
+
+@pytest.fixture(scope="module")
+def parser():
+    from conftest import require
+
+    try:
+        from rosidl_adapter import parser as module
+    except ImportError:
+        module = None
+    require(module, "rosidl_adapter (PyPI ros-jazzy-rosidl-adapter)")
+    return module
+
+
+def _their_fields(spec):
+    return [
+        (str(f.type.pkg_name or ""), f.type.type, f.type.is_array, f.type.array_size,
+         f.type.is_upper_bound, f.type.string_upper_bound, f.name,
+         tuple(f.default_value) if isinstance(f.default_value, list) else f.default_value)
+        for f in spec.fields
+    ]
+
+
+def _our_fields(spec: MessageSpec):
+    rows = []
+    for f in spec.fields:
+        ref = f.type
+        package, base = ("", ref.base) if ref.is_builtin else (ref.package, ref.short_name)
+        rows.append((package, base, ref.is_array, ref.size, ref.array.value == "bounded",
+                     ref.string_bound, f.name, f.default))
+    return rows
+
+
+def _compare(ours: MessageSpec, theirs) -> list[str]:
+    problems = []
+    if _our_fields(ours) != _their_fields(theirs):
+        problems.append(f"{ours.full_name}: fields differ")
+    their_constants = [(c.type, c.name, c.value) for c in theirs.constants]
+    if [(c.type, c.name, c.value) for c in ours.constants] != their_constants:
+        problems.append(f"{ours.full_name}: constants differ")
+    return problems
+
+
+def test_the_jazzy_set_is_complete(registry):
+    interfaces, problems = registry.parse_all()
+    assert problems == []
+    kinds = {i.kind.value for i in interfaces}
+    assert kinds == {"msg", "srv", "action"}
+    assert len(interfaces) >= 150
+
+
+def test_every_interface_parses_like_rosidl_adapter(registry, parser):
+    problems = []
+    for file in registry.files():
+        ours = registry.parse(file)
+        if isinstance(ours, MessageSpec):
+            problems += _compare(ours, parser.parse_message_file(file.package, str(file.path)))
+        elif isinstance(ours, ServiceSpec):
+            theirs = parser.parse_service_file(file.package, str(file.path))
+            problems += _compare(ours.request, theirs.request)
+            problems += _compare(ours.response, theirs.response)
+        else:
+            theirs = parser.parse_action_file(file.package, str(file.path))
+            for part in ("goal", "result", "feedback"):
+                problems += _compare(getattr(ours, part), getattr(theirs, part))
+    assert problems == []
+
+
+def test_every_type_hash_equals_the_shipped_json(registry, ros2_share):
+    identity = Ros2Identity(registry)
+    checked, mismatches = 0, []
+    for file in registry.files():
+        interface = registry.parse(file)
+        shipped = json.loads(file.path.with_suffix(".json").read_text())
+        expected = {h["type_name"]: h["hash_string"] for h in shipped["type_hashes"]}
+        own = [interface]
+        if isinstance(interface, ServiceSpec):
+            own += list(interface.parts)
+        if isinstance(interface, ActionSpec):
+            own += list(interface.messages) + list(interface.services)
+        for item in own:
+            checked += 1
+            if identity.type_hash(item) != expected[item.full_name]:
+                mismatches.append(item.full_name)
+    assert checked >= 250  # 181 interfaces plus their service and action parts
+    assert mismatches == []

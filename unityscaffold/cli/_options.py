@@ -1,0 +1,32 @@
+"""Options shared by several commands, so they read and behave the same everywhere."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import typer
+
+from unityscaffold.errors import UserError
+from unityscaffold.interfaces.model import Dialect
+
+RosOption: int | None = typer.Option(
+    None, "--ros", metavar="1|2",
+    help="ROS version whose rules apply. Default: $ROS_VERSION when set, else 2.",
+)  # fmt: skip
+PathOption: list[Path] = typer.Option(
+    [], "--path", metavar="DIR",
+    help="Folder to search for ROS packages before the ROS environment and the built-in "
+    "definitions; repeatable.",
+)  # fmt: skip
+JsonOption: bool = typer.Option(False, "--json", help="Print JSON for scripts.")
+
+
+def dialect_of(ros: int | None) -> Dialect:
+    """The dialect for ``--ros``, falling back to ``$ROS_VERSION`` and then ROS 2."""
+    if ros is None:
+        env = os.environ.get("ROS_VERSION", "").strip()
+        ros = int(env) if env in ("1", "2") else 2
+    if ros not in (1, 2):
+        raise UserError(f"--ros must be 1 or 2, not {ros}")
+    return Dialect(ros)

@@ -1,0 +1,139 @@
+"""What discovery found: topics, services, their definitions, and what went wrong on the way.
+
+Directions are from Unity's point of view, because that is what the manifest records: a topic
+the ROS system publishes is one Unity should ``subscribe`` to, and a topic the ROS system only
+subscribes to is one Unity should ``publish``.
+"""
+
+from __future__ import annotations
+
+import enum
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+from unityscaffold.errors import UserError
+from unityscaffold.interfaces.model import Dialect
+
+__all__ = [
+    "Direction",
+    "DiscoveredService",
+    "DiscoveredTopic",
+    "Discovery",
+    "NameFilter",
+    "Progress",
+]
+
+# Called as ``progress(done, total, name)`` while probing; library code never prints.
+Progress = Callable[[int, int, str], None]
+
+# Plumbing every ROS node or bridge brings along; nobody wants a Unity script for these.
+_SYSTEM_NAMES = re.compile(
+    r"^/rosout(_agg)?$|^/parameter_events$|^/rosapi(/|$)|^/rosbridge_websocket(/|$)"
+    r"|/(get_loggers|set_logger_level|describe_parameters|get_parameters|get_parameter_types"
+    r"|list_parameters|set_parameters|set_parameters_atomically|get_type_description)$"
+)
+
+
+class Direction(enum.Enum):
+    """What Unity should do with a topic."""
+
+    SUBSCRIBE = "subscribe"
+    PUBLISH = "publish"
+    UNKNOWN = "unknown"
+
+    @classmethod
+    def from_graph(cls, has_publishers: bool, has_subscribers: bool) -> Direction:
+        if has_publishers:
+            return cls.SUBSCRIBE
+        if has_subscribers:
+            return cls.PUBLISH
+        return cls.UNKNOWN
+
+
+@dataclass(frozen=True, slots=True)
+class DiscoveredTopic:
+    """A topic; ``md5`` and ``definition`` (the full text) are ``None`` when not reported."""
+
+    name: str
+    type: str
+    direction: Direction = Direction.UNKNOWN
+    md5: str | None = None
+    definition: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "type": self.type, "direction": self.direction.value,
+                "md5sum": self.md5, "definition": self.definition}
+
+
+@dataclass(frozen=True, slots=True)
+class DiscoveredService:
+    """A service; ROS 1 nodes report the md5 but never the ``.srv`` text."""
+
+    name: str
+    type: str
+    md5: str | None = None
+    definition: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "type": self.type, "md5sum": self.md5,
+                "definition": self.definition}
+
+
+@dataclass(frozen=True, slots=True)
+class Discovery:
+    """Everything one source reported, sorted by name."""
+
+    dialect: Dialect
+    source: str
+    topics: tuple[DiscoveredTopic, ...] = ()
+    services: tuple[DiscoveredService, ...] = ()
+    warnings: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "topics", tuple(sorted(self.topics, key=lambda t: t.name)))
+        object.__setattr__(self, "services", tuple(sorted(self.services, key=lambda s: s.name)))
+
+    def with_warnings(self, *warnings: str) -> Discovery:
+        return replace(self, warnings=(*self.warnings, *warnings))
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "ros": int(self.dialect),
+            "source": self.source,
+            "topics": [t.to_json() for t in self.topics],
+            "services": [s.to_json() for s in self.services],
+            "warnings": list(self.warnings),
+        }
+
+
+@dataclass(frozen=True, slots=True)
+class NameFilter:
+    """``--select``/``--exclude`` regular expressions (searched, not anchored) and system names."""
+
+    select: re.Pattern[str] | None = None
+    exclude: re.Pattern[str] | None = None
+    include_system: bool = False
+    _cache: dict[str, bool] = field(default_factory=dict, compare=False, repr=False)
+
+    @classmethod
+    def of(cls, select: str | None = None, exclude: str | None = None, *,
+           include_system: bool = False) -> NameFilter:
+        return cls(_compile(select, "--select"), _compile(exclude, "--exclude"), include_system)
+
+    def accepts(self, name: str) -> bool:
+        if not self.include_system and _SYSTEM_NAMES.search(name):
+            return False
+        if self.select is not None and not self.select.search(name):
+            return False
+        return self.exclude is None or not self.exclude.search(name)
+
+
+def _compile(pattern: str | None, option: str) -> re.Pattern[str] | None:
+    if pattern is None:
+        return None
+    try:
+        return re.compile(pattern)
+    except re.error as exc:
+        raise UserError(f"{option} {pattern!r} is not a valid regular expression: {exc}") from None
