@@ -42,7 +42,8 @@ def _root(
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; user errors become a message on stderr and exit status 2, never a traceback."""
     try:
-        app(args=argv, standalone_mode=False)
+        # Without standalone mode click returns a command's exit status instead of exiting.
+        status = app(args=argv, standalone_mode=False)
     except ScaffoldError as exc:
         typer.echo(exc.render(), err=True)
         return int(exc.exit_code)
@@ -61,7 +62,7 @@ def main(argv: list[str] | None = None) -> int:
             exc.show()
             return int(Exit.USER_ERROR)
         raise
-    return int(Exit.OK)
+    return status if isinstance(status, int) else int(Exit.OK)
 
 
 if __name__ == "__main__":  # pragma: no cover

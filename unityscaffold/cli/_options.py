@@ -30,3 +30,8 @@ def dialect_of(ros: int | None) -> Dialect:
     if ros not in (1, 2):
         raise UserError(f"--ros must be 1 or 2, not {ros}")
     return Dialect(ros)
+NoEnvOption: bool = typer.Option(
+    False, "--no-env",
+    help="Ignore the ROS environment (ROS_PACKAGE_PATH, AMENT_PREFIX_PATH, /opt/ros, /usr/share): "
+    "search only --path folders and the built-in standard definitions.",
+)  # fmt: skip

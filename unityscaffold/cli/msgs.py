@@ -8,7 +8,13 @@ from typing import Any
 
 import typer
 
-from unityscaffold.cli._options import JsonOption, PathOption, RosOption, dialect_of
+from unityscaffold.cli._options import (
+    JsonOption,
+    NoEnvOption,
+    PathOption,
+    RosOption,
+    dialect_of,
+)
 from unityscaffold.errors import Exit, LocatedError
 from unityscaffold.interfaces.describe import Describer
 from unityscaffold.interfaces.registry import Registry
@@ -32,6 +38,7 @@ def list_types(
     package: str | None = typer.Option(None, "--package", "-p", help="Only this package."),
     ros: int | None = RosOption,
     path: list[Path] = PathOption,
+    no_env: bool = NoEnvOption,
     as_json: bool = JsonOption,
 ) -> None:
     """List every known type, grouped by package, with where it was found.
@@ -39,7 +46,7 @@ def list_types(
     A malformed file is reported (file:line:col) without hiding the good types; the exit
     status is then 2.
     """
-    registry = Registry.load(dialect_of(ros), path)
+    registry = Registry.load(dialect_of(ros), path, use_environment=not no_env)
     files = [f for f in registry.files() if package is None or f.package == package]
     if package is not None and not files:
         from unityscaffold.errors import UserError
@@ -78,7 +85,9 @@ def _show_text(describer: Describer, data: dict[str, Any], registry: Registry) -
     origin = f" ({file.origin})" if file else ""
     typer.echo(f"  source:     {data['source']}{origin}")
     for other in registry.shadowed(interface):
-        typer.echo(f"  not used:   {other.path} ({other.origin}), defines the same type")
+        same = file is not None and other.path.read_bytes() == file.path.read_bytes()
+        note = "same text" if same else "DIFFERENT text"
+        typer.echo(f"  not used:   {other.path} ({other.origin}; {note})")
     identity = describer.identity(interface)
     if identity["md5sum"]:
         typer.echo(f"  md5sum:     {identity['md5sum']}")
@@ -108,13 +117,14 @@ def show(
                                       help="Types such as geometry_msgs/Twist or std_srvs/Trigger."),
     ros: int | None = RosOption,
     path: list[Path] = PathOption,
+    no_env: bool = NoEnvOption,
     as_json: bool = JsonOption,
 ) -> None:
     """Show types: fields, constants, source file, md5sum (ROS 1) or type hash (ROS 2), definition.
 
     Service halves are accepted as types too: pkg/SrvRequest (ROS 1), pkg/srv/Srv_Request (ROS 2).
     """
-    registry = Registry.load(dialect_of(ros), path)
+    registry = Registry.load(dialect_of(ros), path, use_environment=not no_env)
     describer = Describer(registry)
     described = [describer.describe(registry.get(name)) for name in types]
     if as_json:
