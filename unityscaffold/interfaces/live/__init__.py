@@ -1,0 +1,67 @@
+"""Live and recorded ROS systems as interface sources: what ``scaffold discover`` reads.
+
+Three sources feed one result model (``Discovery``): a ROS 1 master with TCPROS probes of its
+nodes (``master``), a rosbridge's rosapi (``rosbridge``), and bag files (``bag``).
+``definitions`` turns the full definition texts they report back into ``.msg`` files in a
+definitions cache, verifying ROS 1 md5sums on the way.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from unityscaffold.errors import UserError
+from unityscaffold.interfaces.live.model import (
+    Direction,
+    DiscoveredService,
+    DiscoveredTopic,
+    Discovery,
+    NameFilter,
+    Progress,
+)
+from unityscaffold.interfaces.model import Dialect
+
+__all__ = [
+    "Direction",
+    "DiscoveredService",
+    "DiscoveredTopic",
+    "Discovery",
+    "NameFilter",
+    "Progress",
+    "discover",
+    "list_live_types",
+]
+
+
+def list_live_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
+    """``(topic, type)`` of the active topics: ``http://`` is a ROS 1 master, ``ws://`` or
+    ``wss://`` a rosbridge."""
+    from unityscaffold.interfaces.live import master, rosbridge
+
+    if url.startswith("http://"):
+        return master.list_master_types(url, timeout=timeout)
+    if url.startswith(("ws://", "wss://")):
+        return rosbridge.list_rosbridge_types(url, timeout=timeout)
+    raise UserError(f"not a live ROS URL: {url!r}",
+                    hint="use http://HOST:11311 (ROS 1 master) or ws://HOST:9090 (rosbridge)")
+
+
+def discover(*, master_url: str | None = None, rosbridge_url: str | None = None,
+             bag: Path | None = None, timeout: float = 2.0, names: NameFilter | None = None,
+             dialect: Dialect | None = None, progress: Progress | None = None) -> Discovery:
+    """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``."""
+    from unityscaffold.interfaces.live import bag as bags
+    from unityscaffold.interfaces.live import master, rosbridge
+
+    chosen = [s for s in (master_url, rosbridge_url, bag) if s is not None]
+    if len(chosen) != 1:
+        raise UserError("give exactly one of --master, --rosbridge and --bag")
+    names = names or NameFilter()
+    if master_url is not None:
+        return master.discover_master(master_url, timeout=timeout, names=names,
+                                      progress=progress)
+    if rosbridge_url is not None:
+        return rosbridge.discover_rosbridge(rosbridge_url, timeout=timeout, names=names,
+                                            dialect=dialect, progress=progress)
+    assert bag is not None
+    return bags.discover_bag(Path(bag), names=names)

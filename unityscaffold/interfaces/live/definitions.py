@@ -1,0 +1,185 @@
+"""Full definition texts back into ``.msg`` files, in a definitions cache, verified.
+
+A full definition is the root type's text followed, for each type it uses, by a line of 80
+``=``, ``MSG: pkg/Type`` (ROS 2 sources may write ``pkg/msg/Type``) and that type's text, so
+splitting at those separators gives each file back byte for byte. The files are written to
+``<cache>/<pkg>/msg/<Type>.msg`` in a staging folder next to the cache; each ROS 1 type whose
+md5sum the system reported is checked against the md5sum of its reconstruction, and only when
+everything checks out does the staging folder replace the cache.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import tempfile
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.interfaces.identity_ros1 import Ros1Identity
+from unityscaffold.interfaces.live.model import Discovery
+from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
+from unityscaffold.interfaces.registry import Registry
+
+__all__ = ["Definition", "StagedCache", "split_full_text", "stage_definitions"]
+
+_SEPARATOR = re.compile(r"\n={80}\n(MSG|IDL): ([^\n]*)\n")
+_IDL_START = "=" * 80 + "\nIDL: "
+_NAME = re.compile(r"^([A-Za-z][\w]*)/(?:msg/)?([A-Za-z][\w]*)$")
+
+
+@dataclass(frozen=True, slots=True)
+class Definition:
+    """One message's (or service's) own text, as its ``.msg`` (``.srv``) file held it."""
+
+    package: str
+    name: str
+    text: str
+    kind: str = "msg"
+
+    @property
+    def relative_path(self) -> Path:
+        return Path(self.package) / self.kind / f"{self.name}.{self.kind}"
+
+
+def _split_name(type_name: str, root: str) -> tuple[str, str]:
+    match = _NAME.match(type_name.strip())
+    if match is None:
+        raise UserError(f"the definition of {root} names a type {type_name!r}, "
+                        "which is not pkg/Type")
+    return match.group(1), match.group(2)
+
+
+def split_full_text(type_name: str, text: str) -> list[Definition]:
+    """The root type and every type it uses, in the order the text lists them."""
+    if text.startswith(_IDL_START):
+        raise UserError(f"the definition of {type_name} is in IDL form, which cannot be "
+                        "turned into .msg files", hint="record with the ros2msg definition format")
+    pieces = _SEPARATOR.split(text)
+    package, name = _split_name(type_name, type_name)
+    found = [Definition(package, name, pieces[0])]
+    for index in range(1, len(pieces), 3):
+        form, dependency, body = pieces[index : index + 3]
+        if form == "IDL":
+            raise UserError(f"the definition of {type_name} embeds {dependency} in IDL form, "
+                            "which cannot be turned into a .msg file")
+        found.append(Definition(*_split_name(dependency, type_name), body))
+    return found
+
+
+class StagedCache:
+    """A verified copy of the cache, waiting to replace it (``commit``) or to go (``discard``)."""
+
+    def __init__(self, target: Path, staging: Path, changed: list[Path],
+                 warnings: list[str]) -> None:
+        self.target, self.staging = target, staging
+        self.changed = changed
+        self.warnings = warnings
+
+    def commit(self) -> None:
+        """Swap the staging folder into place with two renames, keeping nothing half-written."""
+        old = None
+        if self.target.exists():
+            old = self.target.with_name(f".{self.target.name}.old-{self.staging.name}")
+            self.target.rename(old)
+        self.staging.rename(self.target)
+        if old is not None:
+            shutil.rmtree(old, ignore_errors=True)
+
+    def discard(self) -> None:
+        shutil.rmtree(self.staging, ignore_errors=True)
+
+
+def collect(discovery: Discovery) -> list[Definition]:
+    """Every type the discovery carries a definition of; the first text seen wins."""
+    found: dict[Path, Definition] = {}
+    for topic in discovery.topics:
+        if topic.definition:
+            for definition in split_full_text(topic.type, topic.definition):
+                found.setdefault(definition.relative_path, definition)
+    for service in discovery.services:
+        if service.definition:
+            package, name = _split_name(service.type.replace("/srv/", "/"), service.type)
+            definition = Definition(package, name, service.definition, "srv")
+            found.setdefault(definition.relative_path, definition)
+    return [found[path] for path in sorted(found)]
+
+
+def _write(staging: Path, definitions: Sequence[Definition], cache: Path) -> list[Path]:
+    """Write into ``staging``; return the files that differ from ``cache``."""
+    changed = []
+    for definition in definitions:
+        relative = definition.relative_path
+        old = cache / relative
+        if not old.is_file() or old.read_text(encoding="utf-8") != definition.text:
+            changed.append(relative)
+        path = staging / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(definition.text, encoding="utf-8")
+    return changed
+
+
+def stage_definitions(discovery: Discovery, cache: Path, *,
+                      search_paths: Sequence[Path] = ()) -> StagedCache:
+    """Write the discovered definitions over a copy of ``cache`` and verify them.
+
+    Raises ``UserError`` naming the type when a reconstruction does not parse or its md5sum
+    differs from the one the system reported; nothing is left behind then.
+    """
+    definitions = collect(discovery)
+    cache.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{cache.name}-", dir=cache.parent))
+    try:
+        if cache.is_dir():
+            shutil.copytree(cache, staging, dirs_exist_ok=True)
+        changed = _write(staging, definitions, cache)
+        warnings = _verify(discovery, staging, search_paths)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    return StagedCache(cache, staging, changed, warnings)
+
+
+def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -> list[str]:
+    """Check every reconstruction against the cache alone, and every other type against the
+    cache plus the user's folders and the environment; unknown ones become warnings."""
+    own = Registry.load(discovery.dialect, [staging], use_environment=False, use_builtin=False)
+    wider = Registry.load(discovery.dialect, [staging, *search_paths])
+    warnings: list[str] = []
+    for item in (*discovery.topics, *discovery.services):
+        registry = own if item.definition else wider
+        spec = _lookup(registry, item.type, discovery.source)
+        if spec is None:
+            warnings.append(f"no definition of {item.type} (used by {item.name}): add the folder "
+                            "with its package to the manifest's interfaces")
+            continue
+        if discovery.dialect is Dialect.ROS1 and item.md5:
+            _check_md5(registry, spec, item.md5, item.name, discovery.source)
+    return warnings
+
+
+def _lookup(registry: Registry, type_name: str, source: str) -> MessageSpec | ServiceSpec | None:
+    try:
+        found = registry.find(type_name)
+    except LocatedError as error:
+        first = error.diagnostics[0]
+        raise UserError(f"the definition of {type_name} reported by {source} does not parse: "
+                        f"line {first.location.line}: {first.message}") from None
+    return found if isinstance(found, MessageSpec | ServiceSpec) else None
+
+
+def _check_md5(registry: Registry, spec: MessageSpec | ServiceSpec, reported: str, name: str,
+               source: str) -> None:
+    try:
+        computed = Ros1Identity(registry).md5sum(spec)
+    except UserError as error:
+        raise UserError(f"the definition of {spec.full_name} (used by {name}) is incomplete: "
+                        f"{error.message}") from None
+    if computed != reported:
+        where = spec.source or spec.full_name
+        raise UserError(
+            f"md5sum mismatch for {spec.full_name} (used by {name}): {source} reported "
+            f"{reported}, the definition gives {computed}",
+            hint=f"the system runs a different version of {spec.full_name} than {where}")
