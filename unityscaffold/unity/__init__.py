@@ -1,1 +1,36 @@
-"""unity stage."""
+"""unity stage: Unity scenes, prefabs and ``.meta`` files, edited surgically as text.
+
+``SceneDocument`` loads a text scene or prefab byte-exactly, indexes its hierarchy, and attaches
+or updates MonoBehaviours idempotently (see ``reference/unity-yaml.md``). ``meta`` writes and
+reads ``.meta`` files, ``project`` finds a project's root, salt and script GUIDs, and
+``atomic.write_if_changed`` is the one way files get written.
+"""
+
+from unityscaffold.unity.atomic import write_if_changed
+from unityscaffold.unity.index import Component, GameObject
+from unityscaffold.unity.scene import SceneDocument
+from unityscaffold.unity.textdiff import diff
+from unityscaffold.unity.values import (
+    AssetRef,
+    Enum,
+    FieldValue,
+    InlineMap,
+    ObjectRef,
+    ScriptRef,
+    script_file_id_for_dll_class,
+)
+
+__all__ = [
+    "AssetRef",
+    "Component",
+    "Enum",
+    "FieldValue",
+    "GameObject",
+    "InlineMap",
+    "ObjectRef",
+    "SceneDocument",
+    "ScriptRef",
+    "diff",
+    "script_file_id_for_dll_class",
+    "write_if_changed",
+]

@@ -1,0 +1,1 @@
+"""Tests of the unity stage: scene patcher, .meta files, project index."""

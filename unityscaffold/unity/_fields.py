@@ -1,0 +1,112 @@
+"""A tolerant scanner for the top-level fields of one document (keys indented two spaces).
+
+A field's span is its key line plus every following line that is not another top-level key:
+deeper-indented lines, indentless ``  - `` sequence items, and the empty lines of a folded or
+multi-line quoted scalar. Results are cached on the ``Doc`` and dropped when its text changes.
+"""
+
+from __future__ import annotations
+
+import re
+
+import yaml
+
+from unityscaffold.unity._split import Doc
+
+__all__ = [
+    "field_names",
+    "field_span",
+    "field_value",
+    "list_refs",
+    "parse_field",
+    "ref_value",
+    "script_of",
+]
+
+_KEY_RE = re.compile(r"^  ([^\s\-#'\"][^:\n]*):(?: |$)", re.M)
+_REF_RE = re.compile(r"\{fileID: (-?\d+)\}")
+_SCRIPT_RE = re.compile(r"\{fileID: (-?\d+), guid: ([0-9a-f]{32}),\s+type: (\d+)\}")
+_ITEM_REF_RE = re.compile(r"^  - (?:component: |\d+: )?\{fileID: (-?\d+)\}", re.M)
+_BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
+
+
+def spans(doc: Doc) -> dict[str, tuple[int, int]]:
+    """Top-level key → (start, end) character offsets of its lines within ``doc.text``."""
+    cached = doc.cache.get("spans")
+    if cached is None:
+        found: dict[str, tuple[int, int]] = {}
+        matches = list(_KEY_RE.finditer(doc.text))
+        for index, match in enumerate(matches):
+            end = matches[index + 1].start() if index + 1 < len(matches) else len(doc.text)
+            found.setdefault(match.group(1), (match.start(), end))
+        doc.cache["spans"] = cached = found
+    return cached  # type: ignore[return-value]
+
+
+def field_names(doc: Doc) -> list[str]:
+    return list(spans(doc))
+
+
+def field_span(doc: Doc, key: str) -> tuple[int, int] | None:
+    return spans(doc).get(key)
+
+
+def field_text(doc: Doc, key: str) -> str | None:
+    """The exact lines of ``key`` (with the key itself), or None when the key is absent."""
+    span = field_span(doc, key)
+    return None if span is None else doc.text[span[0] : span[1]]
+
+
+def field_value(doc: Doc, key: str) -> str | None:
+    """The raw text after ``key: `` on a one-line field (None when absent or multi-line)."""
+    text = field_text(doc, key)
+    if text is None or text.count("\n") > 1:
+        return None
+    return text[len(key) + 4 :].rstrip("\n")
+
+
+def parse_field(doc: Doc, key: str) -> object:
+    """The field's value read with a string-only YAML loader (scalars stay ``str``)."""
+    text = field_text(doc, key)
+    if text is None:
+        return None
+    loaded = yaml.load(text, Loader=_BaseLoader)
+    return loaded[key] if isinstance(loaded, dict) else None
+
+
+def scalar_value(doc: Doc, key: str) -> str | None:
+    """A string field's value, unquoted and unfolded."""
+    raw = field_value(doc, key)
+    if raw is not None and not raw.startswith(("'", '"')):
+        return raw
+    value = parse_field(doc, key)
+    return value if isinstance(value, str) else None
+
+
+def ref_value(doc: Doc, key: str) -> int | None:
+    """The fileID of a one-line ``key: {fileID: N}`` (or ``{fileID: N, guid: …}``) field."""
+    text = field_text(doc, key)
+    if text is None:
+        return None
+    match = re.search(r"\{fileID: (-?\d+)", text)
+    return int(match.group(1)) if match else None
+
+
+def list_refs(doc: Doc, key: str) -> list[int]:
+    """fileIDs in an indentless list: ``- {fileID: N}``, ``- component: {…}`` or ``- 4: {…}``."""
+    text = field_text(doc, key)
+    return [] if text is None else [int(m.group(1)) for m in _ITEM_REF_RE.finditer(text)]
+
+
+def script_of(doc: Doc) -> tuple[int, str, int] | None:
+    """(fileID, guid, type) of ``m_Script``, tolerating a flow mapping folded over lines."""
+    text = field_text(doc, "m_Script")
+    if text is None:
+        return None
+    match = _SCRIPT_RE.search(text)
+    return (int(match.group(1)), match.group(2), int(match.group(3))) if match else None
+
+
+def local_refs(text: str) -> list[re.Match[str]]:
+    """Every guid-less ``{fileID: N}`` in ``text``: references to objects in the same file."""
+    return list(_REF_RE.finditer(text))

@@ -1,0 +1,146 @@
+"""Checks a scene must pass before it is written (and that a loaded file must pass to be edited).
+
+Every guid-less ``{fileID: N}`` resolves in the file, fileIDs are unique, components and
+GameObjects point at each other, each GameObject has one Transform listed first, parents and
+children agree, ``SceneRoots`` lists exactly the roots, and every changed document parses as YAML.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Collection, Sequence
+
+import yaml
+
+from unityscaffold.errors import Diagnostic, SourceLocation
+from unityscaffold.unity import _fields as F
+from unityscaffold.unity._split import Doc
+from unityscaffold.unity.generation import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
+
+__all__ = ["validate_docs"]
+
+_BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
+
+
+class _Locator:
+    """Turns (document, key) into a file location, computing line numbers only when needed."""
+
+    def __init__(self, path: str, prolog: str, docs: Sequence[Doc]) -> None:
+        self.path, self.prolog, self.docs = path, prolog, docs
+        self._lines: dict[int, int] | None = None
+
+    def at(self, doc: Doc, key: str | None, message: str, hint: str | None = None) -> Diagnostic:
+        if self._lines is None:
+            line, self._lines = self.prolog.count("\n") + 1, {}
+            for each in self.docs:
+                self._lines[id(each)] = line
+                line += each.text.count("\n")
+        line = self._lines.get(id(doc), 0)
+        source = doc.header
+        span = F.field_span(doc, key) if key else None
+        if span is not None and line:
+            line += doc.text.count("\n", 0, span[0])
+            source = doc.text[span[0] : doc.text.index("\n", span[0])]
+        where = f"{doc.header}: {key}" if key else doc.header
+        return Diagnostic(SourceLocation(self.path, line, 0, source), f"{where}: {message}", hint=hint)
+
+
+def validate_docs(path: str, prolog: str, docs: Sequence[Doc], changed: Collection[int] = ()
+                  ) -> list[Diagnostic]:
+    """All problems found, in file order; an empty list means the file may be written."""
+    loc = _Locator(path, prolog, docs)
+    by_id: dict[int, Doc] = {}
+    found: list[Diagnostic] = []
+    counts = Counter(d.file_id for d in docs)
+    for doc in docs:
+        if counts[doc.file_id] > 1 and doc.file_id in by_id:
+            found.append(loc.at(doc, None, f"fileID {doc.file_id} is used by more than one object",
+                                hint="every object in a file needs its own fileID"))
+        by_id.setdefault(doc.file_id, doc)
+    for doc in docs:
+        found += _dangling(loc, doc, by_id)
+        if not doc.stripped:
+            found += _ownership(loc, doc, by_id)
+    found += _scene_roots(loc, docs, by_id)
+    for doc in docs:
+        if doc.file_id in changed:
+            found += _parses(loc, doc)
+    return found
+
+
+def _key_at(doc: Doc, offset: int) -> str | None:
+    return next((k for k, (s, e) in F.spans(doc).items() if s <= offset < e), None)
+
+
+def _dangling(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic]:
+    out = []
+    for match in F.local_refs(doc.text):
+        target = int(match.group(1))
+        if target != 0 and target not in by_id:
+            out.append(loc.at(doc, _key_at(doc, match.start()),
+                              f"refers to fileID {target}, which is not in the file"))
+    return out
+
+
+def _ownership(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic]:
+    out = []
+    if doc.class_id == 1:
+        components = F.list_refs(doc, "m_Component")
+        for ref in components:
+            other = by_id.get(ref)
+            if other is not None and not other.stripped and F.ref_value(other, "m_GameObject") != doc.file_id:
+                out.append(loc.at(doc, "m_Component",
+                                  f"lists {other.header} whose m_GameObject is not this GameObject"))
+        transforms = [c for c in components if c in by_id and by_id[c].class_id in TRANSFORM_CLASSES]
+        if len(transforms) != 1 or components[0] != transforms[0]:
+            out.append(loc.at(doc, "m_Component", "a GameObject needs exactly one Transform, listed first"))
+        return out
+    owner = F.ref_value(doc, "m_GameObject")
+    if owner:
+        go = by_id.get(owner)
+        if go is not None and go.class_id == 1 and not go.stripped and doc.file_id not in F.list_refs(go, "m_Component"):
+            out.append(loc.at(doc, "m_GameObject", f"points at {go.header}, whose m_Component does not list it"))
+    if doc.class_id in TRANSFORM_CLASSES:
+        out += _family(loc, doc, by_id)
+    return out
+
+
+def _family(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic]:
+    out = []
+    father = F.ref_value(doc, "m_Father") or 0
+    parent = by_id.get(father)
+    if parent is not None and not parent.stripped and doc.file_id not in F.list_refs(parent, "m_Children"):
+        out.append(loc.at(doc, "m_Father", f"points at {parent.header}, whose m_Children does not list it"))
+    for child_id in F.list_refs(doc, "m_Children"):
+        child = by_id.get(child_id)
+        if child is not None and not child.stripped and F.ref_value(child, "m_Father") != doc.file_id:
+            out.append(loc.at(doc, "m_Children", f"lists {child.header}, whose m_Father is not this Transform"))
+    return out
+
+
+def _scene_roots(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> list[Diagnostic]:
+    scene_roots = [d for d in docs if d.class_id == SCENE_ROOTS_CLASS]
+    if not scene_roots:
+        return []
+    listed = F.list_refs(scene_roots[-1], "m_Roots")
+    expected = set()
+    for doc in docs:
+        if doc.class_id in TRANSFORM_CLASSES and not doc.stripped and not F.ref_value(doc, "m_Father"):
+            expected.add(doc.file_id)
+        elif doc.type_name == "PrefabInstance" and "\n    m_TransformParent: {fileID: 0}\n" in doc.text:
+            expected.add(doc.file_id)
+    if set(listed) == expected and len(listed) == len(expected):
+        return []
+    missing = sorted(expected - set(listed))
+    extra = sorted(set(listed) - expected)
+    return [loc.at(scene_roots[-1], "m_Roots",
+                   f"does not match the root objects (missing {missing}, not roots {extra})")]
+
+
+def _parses(loc: _Locator, doc: Doc) -> list[Diagnostic]:
+    try:
+        yaml.load(doc.text[doc.text.index("\n") + 1 :], Loader=_BaseLoader)
+    except yaml.YAMLError as exc:
+        message = str(exc).strip().split("\n")[0]
+        return [loc.at(doc, None, f"is not valid YAML after editing ({message})")]
+    return []
