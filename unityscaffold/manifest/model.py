@@ -1,0 +1,284 @@
+"""The typed model of a loaded ``robot.yaml`` (manifest version 1).
+
+Every default is already applied and every path is resolved, so later stages never look at the
+YAML again. Each item keeps the positions of its keys' values (``Locations``) so that a problem
+found later (an unknown type, a missing GameObject) is still reported at ``robot.yaml:LINE:COL``.
+"""
+
+from __future__ import annotations
+
+import enum
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Union
+
+from unityscaffold.errors import SourceLocation
+from unityscaffold.interfaces.model import Dialect
+
+__all__ = [
+    "CSHARP_IDENTIFIER",
+    "MANIFEST_VERSION",
+    "Component",
+    "ComponentField",
+    "Connector",
+    "Direction",
+    "FieldValue",
+    "Locations",
+    "Manifest",
+    "ObjectPath",
+    "Protocol",
+    "Role",
+    "Serializer",
+    "Service",
+    "StructValue",
+    "Topic",
+    "default_class_name",
+    "is_csharp_identifier",
+]
+
+MANIFEST_VERSION = 1
+
+
+class Direction(enum.Enum):
+    """Which way a topic's messages flow, seen from Unity."""
+
+    PUBLISH = "publish"
+    SUBSCRIBE = "subscribe"
+
+
+class Role(enum.Enum):
+    """Which side of a service Unity takes."""
+
+    CLIENT = "client"
+    SERVER = "server"
+
+
+class Serializer(enum.IntEnum):
+    """ROS#'s ``RosSocket.SerializerEnum``; the value is what the scene stores."""
+
+    MICROSOFT = 0
+    NEWTONSOFT = 1
+
+    @property
+    def key(self) -> str:
+        """The spelling used in the manifest."""
+        return self.name.lower()
+
+
+class Protocol(enum.IntEnum):
+    """ROS#'s ``Protocols.Protocol``; the value is what the scene stores."""
+
+    WEBSOCKET_SHARP = 0
+    WEBSOCKET_NET = 1
+
+    @property
+    def key(self) -> str:
+        """The spelling used in the manifest (``websocket-sharp``, ``websocket-net``)."""
+        return self.name.lower().replace("_", "-")
+
+
+@dataclass(frozen=True, slots=True)
+class Locations:
+    """Where an item and each of its keys' values were written.
+
+    ``of(key)`` falls back to the item itself for keys that were left to their default, so a
+    later error about a defaulted value still points somewhere useful.
+    """
+
+    item: SourceLocation
+    keys: tuple[tuple[str, SourceLocation], ...] = ()
+
+    def of(self, key: str) -> SourceLocation:
+        for name, location in self.keys:
+            if name == key:
+                return location
+        return self.item
+
+    def has(self, key: str) -> bool:
+        return any(name == key for name, _ in self.keys)
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectPath:
+    """A reference from a component field to a GameObject (or a component on it) in its scene.
+
+    Written ``@Robot/base_link`` or ``@RosConnector:RosConnector`` in the manifest; kept
+    unresolved here because only the scene knows the fileIDs.
+    """
+
+    path: str
+    component: str | None = None
+
+    @property
+    def segments(self) -> tuple[str, ...]:
+        return tuple(self.path.split("/"))
+
+    def __str__(self) -> str:
+        suffix = f":{self.component}" if self.component else ""
+        return f"@{self.path}{suffix}"
+
+
+@dataclass(frozen=True, slots=True)
+class StructValue:
+    """A YAML mapping given as a field value (a serialized struct such as a Vector3)."""
+
+    items: tuple[tuple[str, FieldValue], ...]
+
+    def as_dict(self) -> dict[str, FieldValue]:
+        return dict(self.items)
+
+
+FieldValue = Union[bool, int, float, str, ObjectPath, StructValue, tuple["FieldValue", ...]]
+
+
+@dataclass(frozen=True, slots=True)
+class ComponentField:
+    """One serialized field value of a component, with where its value was written."""
+
+    name: str
+    value: FieldValue
+    location: SourceLocation
+
+
+@dataclass(frozen=True, slots=True)
+class Connector:
+    """ROS#'s RosConnector: where it lives and its serialized settings."""
+
+    scene: str
+    gameobject: str
+    url: str
+    timeout: int
+    serializer: Serializer
+    protocol: Protocol
+    locations: Locations
+
+
+@dataclass(frozen=True, slots=True)
+class Topic:
+    """A topic Unity publishes or subscribes to.
+
+    ``scene`` is relative to the project root and already defaulted; ``create`` is the effective
+    choice (the entry's ``create`` or the manifest's ``create_gameobjects``). ``rate`` is in Hz
+    (None: publish on demand); ``throttle`` in milliseconds and ``queue`` are None when unset.
+    """
+
+    name: str
+    type: str
+    direction: Direction
+    gameobject: str
+    scene: str
+    create: bool
+    class_name: str
+    rate: float | None
+    throttle: int | None
+    queue: int | None
+    locations: Locations
+
+
+@dataclass(frozen=True, slots=True)
+class Service:
+    """A service Unity calls (client) or provides (server)."""
+
+    name: str
+    type: str
+    role: Role
+    gameobject: str
+    scene: str
+    create: bool
+    class_name: str
+    locations: Locations
+
+
+@dataclass(frozen=True, slots=True)
+class Component:
+    """An existing MonoBehaviour to put on a GameObject with the given field values.
+
+    ``script`` is a class name (``TwistSubscriber``) or a project-relative ``.cs`` path.
+    """
+
+    script: str
+    gameobject: str
+    scene: str
+    create: bool
+    fields: tuple[ComponentField, ...]
+    locations: Locations
+
+    def field(self, name: str) -> ComponentField | None:
+        return next((f for f in self.fields if f.name == name), None)
+
+
+@dataclass(frozen=True, slots=True)
+class Manifest:
+    """A validated manifest with every path absolute and every default applied.
+
+    ``path`` is the manifest file, ``project_root`` the Unity project, ``output_dir`` the folder
+    for generated code (inside ``Assets/``); ``interfaces`` are absolute folders in the order
+    written. ``namespace`` is None when the codegen default applies.
+    """
+
+    path: Path
+    version: int
+    ros: Dialect
+    project_root: Path
+    output_dir: Path
+    namespace: str | None
+    include_shipped: bool
+    interfaces: tuple[Path, ...]
+    scene: str | None
+    create_gameobjects: bool
+    connector: Connector
+    topics: tuple[Topic, ...]
+    services: tuple[Service, ...]
+    components: tuple[Component, ...]
+    locations: Locations
+
+    @property
+    def output(self) -> str:
+        """The output folder relative to the project root, POSIX style."""
+        return self.output_dir.relative_to(self.project_root).as_posix()
+
+    def scene_path(self, scene: str) -> Path:
+        """The absolute path of a project-relative scene such as ``topic.scene``."""
+        return self.project_root / scene
+
+    @property
+    def scenes(self) -> tuple[str, ...]:
+        """Every scene the manifest touches, sorted."""
+        named = {self.connector.scene}
+        for item in (*self.topics, *self.services, *self.components):
+            named.add(item.scene)
+        return tuple(sorted(named))
+
+
+_CSHARP_KEYWORDS = frozenset(
+    """abstract as base bool break byte case catch char checked class const continue decimal
+    default delegate do double else enum event explicit extern false finally fixed float for
+    foreach goto if implicit in int interface internal is lock long namespace new null object
+    operator out override params private protected public readonly ref return sbyte sealed short
+    sizeof stackalloc static string struct switch this throw true try typeof uint ulong unchecked
+    unsafe ushort using virtual void volatile while""".split()
+)
+CSHARP_IDENTIFIER = r"[A-Za-z_][A-Za-z0-9_]*"
+_IDENTIFIER_RE = re.compile(CSHARP_IDENTIFIER)
+_SUFFIX: dict[Direction | Role, str] = {
+    Direction.PUBLISH: "Publisher",
+    Direction.SUBSCRIBE: "Subscriber",
+    Role.CLIENT: "Client",
+    Role.SERVER: "Server",
+}
+
+
+def is_csharp_identifier(name: str) -> bool:
+    """True for a plain (ASCII, non-keyword) C# identifier usable as a class name."""
+    return bool(_IDENTIFIER_RE.fullmatch(name)) and name not in _CSHARP_KEYWORDS
+
+
+def default_class_name(name: str, kind: Direction | Role) -> str:
+    """The generated script's class for a topic or service: ``/robot/odom`` → ``RobotOdom…``.
+
+    Every ``/`` or ``_`` separated word is capitalised (the rest of the word is kept, so
+    ``imuData`` stays ``ImuData``) and the suffix says what the class does.
+    """
+    words = [w for w in re.split(r"[/_]+", name) if w]
+    return "".join(w[0].upper() + w[1:] for w in words) + _SUFFIX[kind]
