@@ -62,11 +62,12 @@ class _Api:
 
     def __init__(self, url: str, timeout: float, who: str) -> None:
         self.url, self.timeout, self.who = url, timeout, who
-        self._proxy = xmlrpc.client.ServerProxy(url, transport=_TimeoutTransport(timeout))
 
     def call(self, method: str, *args: Any) -> Any:
+        # A proxy per call: ServerProxy keeps one HTTP connection and is not thread-safe.
+        proxy = xmlrpc.client.ServerProxy(self.url, transport=_TimeoutTransport(self.timeout))
         try:
-            reply = getattr(self._proxy, method)(CALLER_ID, *args)
+            reply = getattr(proxy, method)(CALLER_ID, *args)
         except ConnectionRefusedError:
             raise UserError(f"no {self.who} at {self.url} (connection refused)") from None
         except TimeoutError:
