@@ -71,8 +71,9 @@ class Reader:
                            hint=suggest(entry.key, section.names))
         for name in section.required:
             if node.get(name) is None:
+                doc = section.key(name).doc.replace("`", "")
                 self.error(node.location, f"{section.label} is missing required key '{name}'",
-                           expected=section.key(name).doc.rstrip("."))
+                           hint=f"{name}: {doc[0].lower()}{doc[1:]}")
         return node
 
     def scalar(self, m: YMap, key: str, types: tuple[type, ...], expected: str,

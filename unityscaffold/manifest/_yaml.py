@@ -176,7 +176,14 @@ class _Converter:
             if not isinstance(key_node, ScalarNode):
                 raise self.fail(key_node, "a mapping key must be plain text")
             key = str(key_node.value)
-            entry = YEntry(key, self.loc(key_node), self.convert(value_node))
+            value = self.convert(value_node)
+            if _is_empty(value_node):
+                # An empty value's mark is the next token, often on a later line; point just
+                # after the key's colon instead.
+                mark = key_node.end_mark
+                value = YScalar(None, _location(self._path, self._lines, mark.line,
+                                                mark.column + 1))
+            entry = YEntry(key, self.loc(key_node), value)
             if key in seen:
                 first = seen[key].key_location
                 raise self.fail(key_node, f"duplicate key '{key}'",
@@ -199,6 +206,10 @@ class _Converter:
                 raise self.fail(source, "a YAML merge key (<<) needs a mapping or list of them")
             result.extend(e for e in converted.entries if e.key not in {r.key for r in result})
         return result
+
+
+def _is_empty(node: Node) -> bool:
+    return isinstance(node, ScalarNode) and node.value == "" and node.style is None
 
 
 def _tag(node: Node) -> str:

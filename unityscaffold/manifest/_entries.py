@@ -1,0 +1,209 @@
+"""Reading the ``topics``, ``services`` and ``components`` entries of a manifest."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.errors import SourceLocation
+from unityscaffold.manifest import _spec as spec
+from unityscaffold.manifest._fields import read_fields
+from unityscaffold.manifest._paths import project_path
+from unityscaffold.manifest._read import Reader
+from unityscaffold.manifest._yaml import YMap, YNode
+from unityscaffold.manifest.model import (
+    Component,
+    Direction,
+    Locations,
+    Role,
+    Service,
+    Topic,
+    default_class_name,
+    is_csharp_identifier,
+)
+
+__all__ = ["Context", "read_component", "read_gameobject", "read_scene", "read_service",
+           "read_topic", "locations"]
+
+EXPECT_NAME = "a ROS name such as /cmd_vel: letters, digits, '_' and '/'"
+EXPECT_GAMEOBJECT = "a hierarchy path such as Robot/base_link"
+EXPECT_SCENE = "a .unity file inside the project, e.g. Assets/Scenes/Main.unity"
+EXPECT_SCRIPT = "a class name such as TwistSubscriber, or a .cs file inside the project"
+
+
+@dataclass(frozen=True, slots=True)
+class Context:
+    """What entries inherit from the top level of the manifest."""
+
+    project_root: Path
+    scene: str | None
+    create: bool
+    connector_gameobject: str
+
+
+def locations(m: YMap) -> Locations:
+    return Locations(m.location, tuple((e.key, e.value.location) for e in m.entries))
+
+
+def read_scene(r: Reader, m: YMap, ctx: Context, label: str) -> str | None:
+    """The entry's scene, or the top-level one; reports an entry left without a scene."""
+    entry = m.get("scene")
+    if entry is None:
+        if ctx.scene is None:
+            r.error(m.location, f"no scene for this {label}",
+                    hint="add 'scene:' to the entry, or a top-level 'scene:' for all entries")
+        return ctx.scene
+    value = r.text(m, "scene", EXPECT_SCENE, spec.SCENE,
+                   hint="a scene file ends in .unity")
+    if value is None:
+        return None
+    return project_path(r, entry, value, ctx.project_root, expected=EXPECT_SCENE)
+
+
+def read_gameobject(r: Reader, m: YMap, default: str | None) -> str | None:
+    entry = m.get("gameobject")
+    if entry is None:
+        return default
+    hint = None
+    raw = entry.value
+    text = getattr(raw, "value", None)
+    if isinstance(text, str) and (text.startswith("/") or text.endswith("/") or "//" in text):
+        hint = "paths start at a root GameObject of the scene and have no empty parts"
+    return r.text(m, "gameobject", EXPECT_GAMEOBJECT, spec.GAMEOBJECT, hint=hint)
+
+
+def _name_hint(m: YMap) -> str | None:
+    entry = m.get("name")
+    value = getattr(entry.value, "value", None) if entry else None
+    if not isinstance(value, str):
+        return None
+    if "//" in value:
+        return "remove the doubled '/'"
+    if value.endswith("/"):
+        return "remove the trailing '/'"
+    if value.startswith("~"):
+        return "private names (~) do not exist for rosbridge clients; write the full name"
+    if any(part[:1].isdigit() for part in value.split("/")):
+        return "each part of a name starts with a letter (or '_' after the first '/')"
+    return "ROS names use only letters, digits, '_' and '/'"
+
+
+def _type_hint(m: YMap, wrong_kind: str, where: str) -> str | None:
+    entry = m.get("type")
+    value = getattr(entry.value, "value", None) if entry else None
+    if isinstance(value, str) and f"/{wrong_kind}/" in value:
+        return f"'{value}' is a {'service' if wrong_kind == 'srv' else 'message'} type; " \
+               f"list it under '{where}'"
+    return None
+
+
+def _class_name(r: Reader, m: YMap, name: str | None, kind: Direction | Role | None) -> str:
+    entry = m.get("class")
+    if entry is not None:
+        value = r.text(m, "class", "a C# class name such as CmdVelPublisher", spec.CLASS_NAME)
+        if value is not None and not is_csharp_identifier(value):
+            r.invalid(entry, "a C# class name", hint=f"'{value}' is a C# keyword")
+        return value or ""
+    if name is None or kind is None:
+        return ""
+    return default_class_name(name, kind)
+
+
+def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:
+    m = r.mapping(node, spec.TOPIC)
+    if m is None:
+        return None
+    name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
+    type_ = r.text(m, "type", "a message type such as geometry_msgs/Twist", spec.MSG_TYPE,
+                   hint=_type_hint(m, "srv", "services"))
+    choice = r.choice(m, "direction", [d.value for d in Direction])
+    direction = Direction(choice) if choice else None
+    rate, throttle, queue = _rates(r, m, direction)
+    topic = Topic(
+        name=name or "", type=type_ or "", direction=direction or Direction.PUBLISH,
+        gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
+        scene=read_scene(r, m, ctx, "topic") or "",
+        create=_create(r, m, ctx), class_name=_class_name(r, m, name, direction),
+        rate=rate, throttle=throttle, queue=queue, locations=locations(m),
+    )
+    return topic if name and type_ and direction else None
+
+
+def _rates(r: Reader, m: YMap, direction: Direction | None
+           ) -> tuple[float | None, int | None, int | None]:
+    """``rate`` for publishers, ``throttle``/``queue`` for subscribers; misplaced ones fail."""
+    if direction is Direction.SUBSCRIBE and (entry := m.get("rate")) is not None:
+        r.error(entry.key_location, "'rate' applies only to topics with direction: publish",
+                hint="a subscriber gets messages at the publisher's rate; use 'throttle' "
+                "(milliseconds between messages) to slow them down")
+    if direction is Direction.PUBLISH:
+        for key in ("throttle", "queue"):
+            if (entry := m.get(key)) is not None:
+                r.error(entry.key_location,
+                        f"'{key}' applies only to topics with direction: subscribe",
+                        hint="use 'rate' (messages per second) to set how often Unity publishes")
+    rate = throttle = queue = None
+    if direction is not Direction.SUBSCRIBE:
+        rate = r.positive_number(m, "rate", " (messages per second)")
+    if direction is not Direction.PUBLISH:
+        throttle = r.integer(m, "throttle", 0, " (milliseconds)")
+        queue = r.integer(m, "queue", 1)
+    return rate, throttle, queue
+
+
+def _create(r: Reader, m: YMap, ctx: Context) -> bool:
+    value = r.boolean(m, "create")
+    return ctx.create if value is None else value
+
+
+def read_service(r: Reader, node: YNode, ctx: Context) -> Service | None:
+    m = r.mapping(node, spec.SERVICE)
+    if m is None:
+        return None
+    name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
+    type_ = r.text(m, "type", "a service type such as std_srvs/Trigger", spec.SRV_TYPE,
+                   hint=_type_hint(m, "msg", "topics"))
+    choice = r.choice(m, "role", [x.value for x in Role])
+    role = Role(choice) if choice else None
+    service = Service(
+        name=name or "", type=type_ or "", role=role or Role.CLIENT,
+        gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
+        scene=read_scene(r, m, ctx, "service") or "",
+        create=_create(r, m, ctx), class_name=_class_name(r, m, name, role),
+        locations=locations(m),
+    )
+    return service if name and type_ and role else None
+
+
+def read_component(r: Reader, node: YNode, ctx: Context) -> Component | None:
+    m = r.mapping(node, spec.COMPONENT)
+    if m is None:
+        return None
+    script = _script(r, m, ctx)
+    gameobject = read_gameobject(r, m, None)
+    component = Component(
+        script=script or "", gameobject=gameobject or "",
+        scene=read_scene(r, m, ctx, "component") or "", create=_create(r, m, ctx),
+        fields=read_fields(r, m), locations=locations(m),
+    )
+    return component if script and gameobject else None
+
+
+def _script(r: Reader, m: YMap, ctx: Context) -> str | None:
+    value = r.text(m, "script", EXPECT_SCRIPT)
+    if value is None:
+        return None
+    entry = m.get("script")
+    assert entry is not None
+    if value.endswith(".cs"):
+        return project_path(r, entry, value, ctx.project_root, expected=EXPECT_SCRIPT)
+    if not re.fullmatch(spec.NAMESPACE.strip("^$"), value):
+        r.invalid(entry, EXPECT_SCRIPT, hint="a class name may be qualified with its "
+                  "namespace (RosSharp.RosBridgeClient.TwistSubscriber)")
+        return None
+    return value
+
+
+def first_line(location: SourceLocation) -> str:
+    return f"line {location.line}" if location.line else "above"

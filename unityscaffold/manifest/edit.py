@@ -1,0 +1,233 @@
+"""Add discovered topics and services to a manifest, in place, keeping its comments and layout.
+
+ruamel.yaml's round-trip mode re-emits untouched nodes as they were written; what it cannot
+keep by itself is the indentation style, so that is read from the text first. New entries copy
+the style of the entries already listed (flow ``{…}`` maps by default, as ``scaffold init``
+writes them). A topic or service already listed, under any type, is never added twice.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+import tempfile
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ruamel.yaml import YAML
+from ruamel.yaml.comments import CommentedMap, CommentedSeq
+from ruamel.yaml.error import YAMLError
+
+from unityscaffold.errors import LocatedError, SourceLocation, UserError
+from unityscaffold.interfaces.live.model import (
+    Direction,
+    DiscoveredService,
+    DiscoveredTopic,
+    Discovery,
+)
+
+__all__ = ["DEFAULT_GAMEOBJECT", "ManifestEdit", "edit_manifest", "manifest_fragment",
+           "write_manifest"]
+
+DEFAULT_GAMEOBJECT = "RosConnector"
+_TODO = "TODO: direction: publish (Unity sends) or subscribe (Unity receives)"
+_SEQUENCE_ITEM = re.compile(r"^( *)- ")
+_KEY_ONLY = re.compile(r"^( *)(- )?[^\s#][^:#]*:\s*(#.*)?$")
+
+
+@dataclass(frozen=True, slots=True)
+class ManifestEdit:
+    """The new manifest text and what changed."""
+
+    text: str
+    added_topics: tuple[str, ...] = ()
+    added_services: tuple[str, ...] = ()
+    already_listed: tuple[str, ...] = ()
+    added_interface: str | None = None
+
+    @property
+    def changed(self) -> bool:
+        return bool(self.added_topics or self.added_services or self.added_interface)
+
+
+def _yaml(text: str) -> YAML:
+    yaml = YAML(typ="rt")
+    yaml.preserve_quotes = True
+    yaml.width = 4096  # never re-wrap a user's long flow maps
+    mapping, sequence, offset = _indentation(text)
+    yaml.indent(mapping=mapping, sequence=sequence, offset=offset)
+    return yaml
+
+
+def _indentation(text: str) -> tuple[int, int, int]:
+    """``(mapping, sequence, offset)`` as ruamel counts them, read from the first nested
+    mapping and the first block sequence; ``scaffold init``'s style where there are none."""
+    mapping, sequence, offset = 2, 4, 2
+    lines = [line for line in text.splitlines() if line.strip() and
+             not line.lstrip().startswith("#")]
+    seen_mapping = seen_sequence = False
+    for previous, line in zip(lines, lines[1:]):
+        parent = _KEY_ONLY.match(previous)
+        if parent is None:
+            continue
+        parent_indent = len(parent.group(1)) + (2 if parent.group(2) else 0)
+        indent = len(line) - len(line.lstrip(" "))
+        if not seen_sequence and (item := _SEQUENCE_ITEM.match(line)):
+            offset = max(0, len(item.group(1)) - parent_indent)
+            sequence, seen_sequence = offset + 2, True
+        elif not seen_mapping and indent > parent_indent:
+            mapping, seen_mapping = indent - parent_indent, True
+    return mapping, sequence, offset
+
+
+def _load(text: str, path: str) -> tuple[YAML, CommentedMap]:
+    yaml = _yaml(text)
+    try:
+        document = yaml.load(text)
+    except YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = SourceLocation(path, mark.line + 1, mark.column + 1) if mark else \
+            SourceLocation(path)
+        raise LocatedError.at(where, f"not valid YAML: {getattr(exc, 'problem', exc)}") from None
+    if document is None:
+        document = CommentedMap()
+    if not isinstance(document, CommentedMap):
+        raise LocatedError.at(SourceLocation(path, 1, 1), "the manifest is not a mapping",
+                              expected="keys such as version, ros, topics")
+    return yaml, document
+
+
+def _check_dialect(document: CommentedMap, discovery: Discovery, path: str) -> None:
+    ros = document.get("ros")
+    if ros is not None and ros != int(discovery.dialect):
+        line, col = document.lc.value("ros")
+        raise LocatedError.at(
+            SourceLocation(path, line + 1, col + 1),
+            f"the manifest is for ROS {ros}, but {discovery.source} is a "
+            f"{discovery.dialect.label} system", hint="discover into a manifest for the same ROS")
+
+
+def _list(document: CommentedMap, key: str, path: str) -> CommentedSeq:
+    value = document.get(key)
+    if value is None:
+        value = CommentedSeq()
+        document[key] = value
+    if not isinstance(value, CommentedSeq):
+        line, col = document.lc.value(key)
+        raise LocatedError.at(SourceLocation(path, line + 1, col + 1), f"{key} is not a list")
+    if value.fa.flow_style() and not value:
+        value.fa.set_block_style()  # "topics: []" becomes a list that can grow readably
+    return value
+
+
+def _listed_names(items: Iterable[Any]) -> set[str]:
+    return {str(item["name"]) for item in items if isinstance(item, dict) and "name" in item}
+
+
+def _entry(pairs: list[tuple[str, str]], like: CommentedSeq) -> CommentedMap:
+    entry = CommentedMap(pairs)
+    block = any(isinstance(i, CommentedMap) and not i.fa.flow_style() for i in like)
+    if not block:
+        entry.fa.set_flow_style()
+    return entry
+
+
+def _topic_pairs(topic: DiscoveredTopic) -> list[tuple[str, str]]:
+    pairs = [("name", topic.name), ("type", topic.type)]
+    if topic.direction is not Direction.UNKNOWN:
+        pairs.append(("direction", topic.direction.value))
+    return [*pairs, ("gameobject", DEFAULT_GAMEOBJECT)]
+
+
+def _service_pairs(service: DiscoveredService) -> list[tuple[str, str]]:
+    return [("name", service.name), ("type", service.type), ("role", "client"),
+            ("gameobject", DEFAULT_GAMEOBJECT)]
+
+
+def _add_topics(seq: CommentedSeq, topics: Iterable[DiscoveredTopic]) -> tuple[list[str], list[str]]:
+    listed = _listed_names(seq)
+    added, skipped = [], []
+    for topic in topics:
+        if topic.name in listed:
+            skipped.append(topic.name)
+            continue
+        seq.append(_entry(_topic_pairs(topic), seq))
+        if topic.direction is Direction.UNKNOWN:
+            seq.yaml_add_eol_comment(_TODO, len(seq) - 1)
+        added.append(topic.name)
+    return added, skipped
+
+
+def _add_services(seq: CommentedSeq, services: Iterable[DiscoveredService]
+                  ) -> tuple[list[str], list[str]]:
+    listed = _listed_names(seq)
+    added, skipped = [], []
+    for service in services:
+        if service.name in listed:
+            skipped.append(service.name)
+            continue
+        seq.append(_entry(_service_pairs(service), seq))
+        added.append(service.name)
+    return added, skipped
+
+
+def _add_interface(document: CommentedMap, cache_entry: str, path: str) -> str | None:
+    folders = _list(document, "interfaces", path)
+    wanted = os.path.normpath(cache_entry)
+    if any(isinstance(f, str) and os.path.normpath(f) == wanted for f in folders):
+        return None
+    folders.append(cache_entry)
+    return cache_entry
+
+
+def edit_manifest(text: str, discovery: Discovery, *, cache_entry: str,
+                  path: str = "robot.yaml") -> ManifestEdit:
+    """``text`` with the discovered topics and services and the cache folder added."""
+    yaml, document = _load(text, path)
+    _check_dialect(document, discovery, path)
+    added_interface = _add_interface(document, cache_entry, path)
+    topics, skipped_topics = _add_topics(_list(document, "topics", path), discovery.topics)
+    services, skipped_services = _add_services(_list(document, "services", path),
+                                               discovery.services)
+    result = ManifestEdit(text, tuple(topics), tuple(services),
+                          tuple(skipped_topics + skipped_services), added_interface)
+    if not result.changed:
+        return result
+    out = io.StringIO()
+    yaml.dump(document, out)
+    return ManifestEdit(out.getvalue(), result.added_topics, result.added_services,
+                        result.already_listed, added_interface)
+
+
+def manifest_fragment(discovery: Discovery, *, cache_entry: str) -> str:
+    """The ``interfaces``, ``topics`` and ``services`` entries to paste into a manifest."""
+    fragment = f"# discovered from {discovery.source}\nros: {int(discovery.dialect)}\n"
+    edit = edit_manifest(fragment, discovery, cache_entry=cache_entry, path="<fragment>")
+    return edit.text
+
+
+def write_manifest(path: Path, text: str) -> None:
+    """Replace ``path`` atomically, so an interrupted write never leaves half a manifest."""
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8", newline="") as out:
+            out.write(text)
+        if path.exists():
+            os.chmod(temporary, path.stat().st_mode & 0o7777)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+
+
+def read_manifest(path: Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise UserError(f"manifest not found: {path}",
+                        hint="create one with `scaffold init`, or use --print") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise UserError(f"cannot read manifest {path}: {exc}") from None

@@ -1,0 +1,71 @@
+"""The commented ``robot.yaml`` that ``scaffold init`` writes into a new project."""
+
+from __future__ import annotations
+
+from unityscaffold.errors import UserError
+from unityscaffold.manifest.model import MANIFEST_VERSION
+
+__all__ = ["starter_manifest"]
+
+_TEMPLATE = """\
+{modeline}# unityscaffold manifest: run `scaffold apply robot.yaml` after editing.
+# Every key is described in docs/manifest.md.
+version: {version}
+ros: {ros}                 # ROS version of the robot: 1 or 2
+project: .              # the Unity project root, relative to this file
+output: Assets/RosGenerated
+scene: {scene}
+
+# Extra folders with .msg/.srv/.action files (relative to this file):
+# interfaces:
+#   - ../robot_ws/src
+
+connector:              # ROS#'s RosConnector, created if missing
+  gameobject: RosConnector
+  url: ws://localhost:9090
+  timeout: 10           # seconds
+  serializer: microsoft # or newtonsoft
+  protocol: websocket-sharp  # or websocket-net
+
+topics: []
+# topics:
+#   - name: /cmd_vel
+#     type: geometry_msgs/Twist
+#     direction: publish      # Unity sends
+#     rate: 10                # Hz; leave out to publish on demand
+#   - name: /odom
+#     type: nav_msgs/Odometry
+#     direction: subscribe    # Unity receives
+#     throttle: 100           # at most one message per 100 ms
+
+services: []
+# services:
+#   - name: /reset
+#     type: std_srvs/Trigger
+#     role: client            # Unity calls it (or: server)
+
+components: []
+# components:
+#   - script: TwistSubscriber   # any MonoBehaviour in the project
+#     gameobject: RosConnector
+#     fields:
+#       Topic: /cmd_vel_unity
+#       SubscribedTransform: "@Robot/base_link"
+"""
+
+
+
+def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
+    """A small, valid, commented manifest for a robot on ROS ``ros`` with one ``scene``.
+
+    ``scene`` is the project-relative scene file, e.g. ``Assets/Scenes/Main.unity``. With
+    ``schema`` (a URL or a path relative to the manifest) the first line tells editors running
+    the YAML language server where ``robot.schema.json`` is.
+    """
+    if ros not in (1, 2):
+        raise UserError(f"unknown ROS version {ros}", hint="choose 1 or 2")
+    if not scene.endswith(".unity") or any(c in scene for c in "\n#:\"'"):
+        raise UserError(f"invalid scene path '{scene}'",
+                        hint="give a project-relative .unity file, e.g. Assets/Scenes/Main.unity")
+    modeline = f"# yaml-language-server: $schema={schema}\n" if schema else ""
+    return _TEMPLATE.format(version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline)
