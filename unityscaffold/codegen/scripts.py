@@ -1,0 +1,160 @@
+"""Per-topic and per-service MonoBehaviours for ROS#: a regenerated half and a user half.
+
+Each script is a C# partial class split over two files: ``<Class>.cs`` holds the plumbing
+(serialized fields, subscribing, the hand-off to Unity's main thread) and is regenerated freely;
+``<Class>.User.cs`` holds the user's logic, is created once and never rewritten. Unity ties the
+script asset (and so the scene component) to ``<Class>.cs``, whose name matches the class.
+
+The scripts reference their RosConnector through a serialized field instead of ROS#'s
+``[RequireComponent]`` pattern, so they can live on any GameObject.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+from unityscaffold.codegen._templates import environment
+from unityscaffold.codegen.literals import string_literal as csharp_string
+
+__all__ = [
+    "SCRIPTS_NAMESPACE",
+    "PublisherScript",
+    "RenderedScript",
+    "ServiceClientScript",
+    "ServiceServerScript",
+    "SubscriberScript",
+    "render_script",
+]
+
+SCRIPTS_NAMESPACE = "RosGenerated"
+"""Namespace of the generated MonoBehaviours, apart from users' own classes."""
+
+
+def _float_literal(value: float) -> str:
+    text = repr(float(value))
+    return f"{text}f"
+
+
+@dataclass(frozen=True, slots=True)
+class _Script:
+    class_name: str
+    ros_type: str
+    manifest: str
+    namespace: str = SCRIPTS_NAMESPACE
+
+    @property
+    def plumbing_file(self) -> str:
+        return f"{self.class_name}.cs"
+
+    @property
+    def user_file(self) -> str:
+        return f"{self.class_name}.User.cs"
+
+
+@dataclass(frozen=True, slots=True)
+class PublisherScript(_Script):
+    template: ClassVar[str] = "rossharp/scripts/Publisher.cs.jinja"
+    user_template: ClassVar[str] = "rossharp/scripts/PublisherUser.cs.jinja"
+    topic: str = ""
+    message_type: str = ""
+    rate: float = 0.0
+
+    @property
+    def what(self) -> str:
+        return f"publisher of {self.topic}"
+
+    @property
+    def topic_literal(self) -> str:
+        return csharp_string(self.topic)
+
+    @property
+    def rate_literal(self) -> str:
+        return _float_literal(self.rate)
+
+    @property
+    def rate_text(self) -> str:
+        return f"{self.rate:g}"
+
+    def serialized_fields(self) -> list[tuple[str, object]]:
+        """Field values the scene holds, in declaration order (``Connector`` set by apply)."""
+        return [("Topic", self.topic), ("Rate", float(self.rate))]
+
+
+@dataclass(frozen=True, slots=True)
+class SubscriberScript(_Script):
+    template: ClassVar[str] = "rossharp/scripts/Subscriber.cs.jinja"
+    user_template: ClassVar[str] = "rossharp/scripts/SubscriberUser.cs.jinja"
+    topic: str = ""
+    message_type: str = ""
+    throttle: int = 0
+    queue: int = 1
+
+    @property
+    def what(self) -> str:
+        return f"subscriber of {self.topic}"
+
+    @property
+    def topic_literal(self) -> str:
+        return csharp_string(self.topic)
+
+    def serialized_fields(self) -> list[tuple[str, object]]:
+        return [("Topic", self.topic), ("Throttle", int(self.throttle)), ("Queue", int(self.queue))]
+
+
+@dataclass(frozen=True, slots=True)
+class _ServiceScript(_Script):
+    service: str = ""
+    request_type: str = ""
+    response_type: str = ""
+
+    @property
+    def service_literal(self) -> str:
+        return csharp_string(self.service)
+
+    @property
+    def request_short(self) -> str:
+        return self.request_type.rsplit(".", 1)[-1]
+
+    def serialized_fields(self) -> list[tuple[str, object]]:
+        return [("ServiceName", self.service)]
+
+
+@dataclass(frozen=True, slots=True)
+class ServiceClientScript(_ServiceScript):
+    template: ClassVar[str] = "rossharp/scripts/ServiceClient.cs.jinja"
+    user_template: ClassVar[str] = "rossharp/scripts/ServiceClientUser.cs.jinja"
+
+    @property
+    def what(self) -> str:
+        return f"client of {self.service}"
+
+
+@dataclass(frozen=True, slots=True)
+class ServiceServerScript(_ServiceScript):
+    template: ClassVar[str] = "rossharp/scripts/ServiceServer.cs.jinja"
+    user_template: ClassVar[str] = "rossharp/scripts/ServiceServerUser.cs.jinja"
+
+    @property
+    def what(self) -> str:
+        return f"server of {self.service}"
+
+
+Script = PublisherScript | SubscriberScript | ServiceClientScript | ServiceServerScript
+
+
+@dataclass(frozen=True, slots=True)
+class RenderedScript:
+    """The two files of one script, by file name."""
+
+    plumbing_name: str
+    plumbing: str
+    user_name: str
+    user: str
+
+
+def render_script(view: Script) -> RenderedScript:
+    env = environment()
+    plumbing = env.get_template(view.template).render(view=view)
+    user = env.get_template(view.user_template).render(view=view)
+    return RenderedScript(view.plumbing_file, plumbing, view.user_file, user)
