@@ -2,19 +2,21 @@
 
 from __future__ import annotations
 
+import string
+
 from unityscaffold.errors import UserError
 from unityscaffold.manifest.model import MANIFEST_VERSION
 
 __all__ = ["starter_manifest"]
 
-_TEMPLATE = """\
-{modeline}# unityscaffold manifest: run `scaffold apply robot.yaml` after editing.
+_TEMPLATE = string.Template("""\
+${modeline}# unityscaffold manifest: run `scaffold apply robot.yaml` after editing.
 # Every key is described in docs/manifest.md.
-version: {version}
-ros: {ros}                 # ROS version of the robot: 1 or 2
+version: ${version}
+ros: ${ros}                 # ROS version of the robot: 1 or 2
 project: .              # the Unity project root, relative to this file
 output: Assets/RosGenerated
-scene: {scene}
+scene: ${scene}
 
 # Extra folders with .msg/.srv/.action files (relative to this file):
 # interfaces:
@@ -27,31 +29,23 @@ connector:              # ROS#'s RosConnector, created if missing
   serializer: microsoft # or newtonsoft
   protocol: websocket-sharp  # or websocket-net
 
-topics: []
-# topics:
-#   - name: /cmd_vel
-#     type: geometry_msgs/Twist
-#     direction: publish      # Unity sends
-#     rate: 10                # Hz; leave out to publish on demand
-#   - name: /odom
-#     type: nav_msgs/Odometry
-#     direction: subscribe    # Unity receives
-#     throttle: 100           # at most one message per 100 ms
+# Each entry: name, type, direction (publish: Unity sends; subscribe: Unity receives),
+# optional rate (Hz, publish), throttle (ms) and queue (subscribe), gameobject, scene.
+topics:
+#  - {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, rate: 10}
+#  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, throttle: 100}
 
-services: []
-# services:
-#   - name: /reset
-#     type: std_srvs/Trigger
-#     role: client            # Unity calls it (or: server)
+# Each entry: name, type, role (client: Unity calls it; server: Unity provides it).
+services:
+#  - {name: /reset, type: std_srvs/Trigger, role: client}
 
-components: []
-# components:
-#   - script: TwistSubscriber   # any MonoBehaviour in the project
-#     gameobject: RosConnector
-#     fields:
-#       Topic: /cmd_vel_unity
-#       SubscribedTransform: "@Robot/base_link"
-"""
+# Existing MonoBehaviours (yours or ROS#'s) with field values; "@Path/To/Object" refers to a
+# GameObject in the same scene.
+components:
+#  - script: TwistSubscriber
+#    gameobject: RosConnector
+#    fields: {Topic: /cmd_vel_unity, SubscribedTransform: "@Robot/base_link"}
+""")
 
 
 
@@ -63,9 +57,9 @@ def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
     the YAML language server where ``robot.schema.json`` is.
     """
     if ros not in (1, 2):
-        raise UserError(f"unknown ROS version {ros}", hint="choose 1 or 2")
+        raise UserError(f"unknown ROS version ${ros}", hint="choose 1 or 2")
     if not scene.endswith(".unity") or any(c in scene for c in "\n#:\"'"):
-        raise UserError(f"invalid scene path '{scene}'",
+        raise UserError(f"invalid scene path '${scene}'",
                         hint="give a project-relative .unity file, e.g. Assets/Scenes/Main.unity")
     modeline = f"# yaml-language-server: $schema={schema}\n" if schema else ""
-    return _TEMPLATE.format(version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline)
+    return _TEMPLATE.substitute(version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline)
