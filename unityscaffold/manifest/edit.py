@@ -29,11 +29,12 @@ from unityscaffold.interfaces.live.model import (
     Discovery,
 )
 
-__all__ = ["DEFAULT_GAMEOBJECT", "ManifestEdit", "edit_manifest", "manifest_fragment",
-           "write_manifest"]
+__all__ = ["DEFAULT_GAMEOBJECT", "ManifestEdit", "edit_manifest", "interface_folders",
+           "manifest_fragment", "read_manifest", "write_manifest"]
 
 DEFAULT_GAMEOBJECT = "RosConnector"
 _TODO = "TODO: direction: publish (Unity sends) or subscribe (Unity receives)"
+_HEADER_KEYS = ("version", "ros", "project", "output", "scene", "namespace")
 _SEQUENCE_ITEM = re.compile(r"^( *)- ")
 _KEY_ONLY = re.compile(r"^( *)(- )?[^\s#][^:#]*:\s*(#.*)?$")
 
@@ -114,13 +115,27 @@ def _list(document: CommentedMap, key: str, path: str) -> CommentedSeq:
     value = document.get(key)
     if value is None:
         value = CommentedSeq()
-        document[key] = value
+        _insert(document, key, value)
     if not isinstance(value, CommentedSeq):
         line, col = document.lc.value(key)
         raise LocatedError.at(SourceLocation(path, line + 1, col + 1), f"{key} is not a list")
     if value.fa.flow_style() and not value:
         value.fa.set_block_style()  # "topics: []" becomes a list that can grow readably
     return value
+
+
+def _insert(document: CommentedMap, key: str, value: CommentedSeq) -> None:
+    """Add a missing key where a reader looks for it: ``interfaces`` after the header keys
+    (and after any commented-out example that follows them), lists at the end."""
+    if key in document:
+        document[key] = value
+        return
+    keys = list(document)
+    header = [i for i, k in enumerate(keys) if k in _HEADER_KEYS]
+    if key == "interfaces" and header:
+        document.insert(header[-1] + 1, key, value)
+    else:
+        document[key] = value
 
 
 def _listed_names(items: Iterable[Any]) -> set[str]:
@@ -231,3 +246,14 @@ def read_manifest(path: Path) -> str:
                         hint="create one with `scaffold init`, or use --print") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise UserError(f"cannot read manifest {path}: {exc}") from None
+
+
+def interface_folders(text: str, base: Path) -> list[Path]:
+    """The manifest's ``interfaces`` folders that exist, resolved against ``base``."""
+    try:
+        _, document = _load(text, "<manifest>")
+    except LocatedError:
+        return []
+    folders = document.get("interfaces") or []
+    found = [base / f for f in folders if isinstance(f, str)] if isinstance(folders, list) else []
+    return [f for f in found if f.is_dir()]
