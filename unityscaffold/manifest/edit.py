@@ -35,7 +35,7 @@ __all__ = ["DEFAULT_GAMEOBJECT", "ManifestEdit", "edit_manifest", "interface_fol
 DEFAULT_GAMEOBJECT = "RosConnector"
 _TODO = "TODO: direction: publish (Unity sends) or subscribe (Unity receives)"
 _HEADER_KEYS = ("version", "ros", "project", "output", "scene", "namespace")
-_SEQUENCE_ITEM = re.compile(r"^( *)- ")
+_SEQUENCE_ITEM = re.compile(r"^( *)-( +)")
 _KEY_ONLY = re.compile(r"^( *)(- )?[^\s#][^:#]*:\s*(#.*)?$")
 
 
@@ -78,7 +78,7 @@ def _indentation(text: str) -> tuple[int, int, int]:
         indent = len(line) - len(line.lstrip(" "))
         if not seen_sequence and (item := _SEQUENCE_ITEM.match(line)):
             offset = max(0, len(item.group(1)) - parent_indent)
-            sequence, seen_sequence = offset + 2, True
+            sequence, seen_sequence = offset + 1 + len(item.group(2)), True
         elif not seen_mapping and indent > parent_indent:
             mapping, seen_mapping = indent - parent_indent, True
     return mapping, sequence, offset
@@ -169,9 +169,14 @@ def _add_topics(seq: CommentedSeq, topics: Iterable[DiscoveredTopic]) -> tuple[l
         if topic.name in listed:
             skipped.append(topic.name)
             continue
-        seq.append(_entry(_topic_pairs(topic), seq))
+        entry = _entry(_topic_pairs(topic), seq)
+        seq.append(entry)
         if topic.direction is Direction.UNKNOWN:
-            seq.yaml_add_eol_comment(_TODO, len(seq) - 1)
+            # A flow map takes the comment at the end of its line; a block map on its first key.
+            if entry.fa.flow_style():
+                seq.yaml_add_eol_comment(_TODO, len(seq) - 1)
+            else:
+                entry.yaml_add_eol_comment(_TODO, "name")
         added.append(topic.name)
     return added, skipped
 

@@ -1,0 +1,112 @@
+"""Adding discovered topics and services to a manifest keeps every other byte."""
+
+from __future__ import annotations
+
+import difflib
+
+import pytest
+
+from unityscaffold.errors import LocatedError
+from unityscaffold.interfaces.live import Direction, DiscoveredService, DiscoveredTopic, Discovery
+from unityscaffold.interfaces.model import Dialect
+from unityscaffold.manifest.edit import edit_manifest, manifest_fragment
+
+EXAMPLE = """\
+# My robot
+version: 1
+ros: 1            # or 2
+project: .        # Unity project root, relative to this file
+interfaces:       # extra folders searched for .msg/.srv/.action
+  - ../robot_ws/src
+connector: {scene: Assets/Scenes/Main.unity, gameobject: RosConnector, url: ws://localhost:9090}
+topics:
+  - {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, gameobject: Robot}
+  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, gameobject: Robot}   # odometry
+services:
+  - {name: /reset, type: std_srvs/Trigger, role: client, gameobject: Robot}
+
+# trailing comment
+"""
+
+FOUND = Discovery(
+    Dialect.ROS1, "http://127.0.0.1:11311",
+    (DiscoveredTopic("/imu", "sensor_msgs/Imu", Direction.SUBSCRIBE),
+     DiscoveredTopic("/odom", "nav_msgs/Odometry", Direction.SUBSCRIBE),
+     DiscoveredTopic("/mystery", "std_msgs/String")),
+    (DiscoveredService("/reset", "std_srvs/Trigger"),
+     DiscoveredService("/calibrate", "scaffold_test_msgs/Calibrate")))
+
+
+def added_lines(before: str, after: str) -> list[str]:
+    diff = difflib.ndiff(before.splitlines(), after.splitlines())
+    assert not [line for line in diff if line.startswith("- ")], "a line was changed or removed"
+    return [line[2:] for line in difflib.ndiff(before.splitlines(), after.splitlines())
+            if line.startswith("+ ")]
+
+
+def test_new_entries_are_appended_and_nothing_else_changes() -> None:
+    edit = edit_manifest(EXAMPLE, FOUND, cache_entry="ros_definitions")
+    assert [" ".join(line.split()) for line in added_lines(EXAMPLE, edit.text)] == [
+        "- ros_definitions",
+        "- {name: /imu, type: sensor_msgs/Imu, direction: subscribe, gameobject: RosConnector}",
+        "- {name: /mystery, type: std_msgs/String, gameobject: RosConnector}"
+        " # TODO: direction: publish (Unity sends) or subscribe (Unity receives)",
+        "- {name: /calibrate, type: scaffold_test_msgs/Calibrate, role: client, "
+        "gameobject: RosConnector}",
+    ]
+    assert "\n  - {name: /imu," in edit.text  # indented like the entries already listed
+    assert edit.added_topics == ("/imu", "/mystery")
+    assert edit.added_services == ("/calibrate",)
+    assert edit.already_listed == ("/odom", "/reset")
+
+
+def test_a_second_edit_changes_nothing() -> None:
+    once = edit_manifest(EXAMPLE, FOUND, cache_entry="ros_definitions")
+    twice = edit_manifest(once.text, FOUND, cache_entry="./ros_definitions")
+    assert not twice.changed
+    assert twice.text == once.text
+
+
+@pytest.mark.parametrize(("style", "text"), [
+    ("offset 0", "version: 1\nros: 1\ntopics:\n- name: /a\n  type: std_msgs/String\n"
+                 "  direction: publish\n"),
+    ("indent 4", "version: 1\nros: 1\ntopics:\n    -   name: /a\n        type: std_msgs/String\n"
+                 "        direction: publish\n"),
+])
+def test_block_style_lists_keep_their_indentation(style: str, text: str) -> None:
+    edit = edit_manifest(text, FOUND, cache_entry="defs")
+    listed = text[text.index("topics:"):]
+    assert listed in edit.text, style
+    new_topics = edit.text[edit.text.index(listed) + len(listed):].split("services:")[0]
+    dash = listed.splitlines()[1].split("name")[0]
+    assert new_topics.startswith(f"{dash}name: /imu\n"), new_topics
+    assert f"{dash}name: /mystery  # TODO: direction" in new_topics
+    assert "{" not in new_topics  # block entries, like the ones already listed
+
+
+def test_empty_flow_lists_and_missing_keys_are_filled() -> None:
+    text = ("version: 1\nros: 1\nproject: .\n\n# Extra folders:\n# interfaces:\n#   - ../ws\n\n"
+            "connector: {url: ws://localhost:9090}\ntopics: []\n# - {name: /example}\n")
+    edit = edit_manifest(text, FOUND, cache_entry="ros_definitions")
+    assert "interfaces:\n  - ros_definitions\nconnector:" in edit.text
+    assert "topics:\n  - {name: /imu," in edit.text
+    assert "# - {name: /example}" in edit.text
+
+
+def test_a_manifest_for_the_other_ros_is_refused_at_its_ros_key() -> None:
+    with pytest.raises(LocatedError) as caught:
+        edit_manifest("version: 1\nros: 2\n", FOUND, cache_entry="d", path="robot.yaml")
+    assert caught.value.render().startswith("robot.yaml:2:6: error: the manifest is for ROS 2")
+
+
+@pytest.mark.parametrize("text", ["- a\n- b\n", "topics: {a: 1}\n", "topics: [\n"])
+def test_malformed_manifests_are_located_errors(text: str) -> None:
+    with pytest.raises(LocatedError):
+        edit_manifest(text, FOUND, cache_entry="d", path="robot.yaml")
+
+
+def test_the_fragment_lists_everything_discovered() -> None:
+    fragment = manifest_fragment(FOUND, cache_entry="ros_definitions")
+    assert fragment.splitlines()[:4] == ["# discovered from http://127.0.0.1:11311", "ros: 1",
+                                         "interfaces:", "  - ros_definitions"]
+    assert fragment.count("gameobject: RosConnector") == 5
