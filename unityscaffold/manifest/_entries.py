@@ -38,6 +38,7 @@ class Context:
 
     project_root: Path
     scene: str | None
+    scene_written: bool  # a wrong top-level scene is reported once, not for every entry
     create: bool
     connector_gameobject: str
 
@@ -50,9 +51,10 @@ def read_scene(r: Reader, m: YMap, ctx: Context, label: str) -> str | None:
     """The entry's scene, or the top-level one; reports an entry left without a scene."""
     entry = m.get("scene")
     if entry is None:
-        if ctx.scene is None:
+        if ctx.scene is None and not ctx.scene_written:
+            where = "under 'connector:'" if label == "connector" else "to this entry"
             r.error(m.location, f"no scene for this {label}",
-                    hint="add 'scene:' to the entry, or a top-level 'scene:' for all entries")
+                    hint=f"add a top-level 'scene:' for every entry, or 'scene:' {where}")
         return ctx.scene
     value = r.text(m, "scene", EXPECT_SCENE, spec.SCENE,
                    hint="a scene file ends in .unity")

@@ -93,7 +93,8 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     scene = _top_scene(r, top, project_root)
     create = r.boolean(top, "create_gameobjects")
     connector = _connector(r, top, project_root, scene)
-    ctx = Context(project_root, scene, True if create is None else create, connector.gameobject)
+    ctx = Context(project_root, scene, top.get("scene") is not None,
+                  True if create is None else create, connector.gameobject)
     topics = [read_topic(r, n, ctx) for n in r.items(top, "topics")]
     services = [read_service(r, n, ctx) for n in r.items(top, "services")]
     components = [read_component(r, n, ctx) for n in r.items(top, "components")]
@@ -180,7 +181,8 @@ def _connector(r: Reader, top: YMap, project_root: Path, scene: str | None) -> C
     if entry is not None and not (isinstance(entry.value, YScalar) and entry.value.value is None):
         m = r.mapping(entry.value, spec.CONNECTOR) or m
     defaults = {k.name: k.default for k in spec.CONNECTOR.keys}
-    ctx = Context(project_root, scene, True, str(defaults["gameobject"]))
+    ctx = Context(project_root, scene, top.get("scene") is not None, True,
+                  str(defaults["gameobject"]))
     serializer = r.choice(m, "serializer", [s.key for s in Serializer])
     protocol = r.choice(m, "protocol", [p.key for p in Protocol])
     return Connector(
