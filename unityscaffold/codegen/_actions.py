@@ -1,0 +1,114 @@
+"""Views of the four action classes ROS# builds on its generic bases.
+
+ROS 1 (``ActionGoal<T>``: header, goal_id, goal; ``ActionResult<T>``/``ActionFeedback<T>``:
+header, status, result/feedback) and ROS 2 as ROS# 2.2.1 models it (``ActionGoal<T>``: header,
+goalInfo, args…; ``ActionResult<T>``: header, action, values, status, result, id;
+``ActionFeedback<T>``: header, values, id, action). ROS#'s own ROS 2 feedback class passes
+``(header, id, action)`` to a base constructor declared ``(header, action, id)``; these pass
+the arguments in the declared order.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from unityscaffold.codegen import literals
+from unityscaffold.codegen._build import FileContext
+from unityscaffold.codegen._names import CsClass, References
+from unityscaffold.codegen.views import ActionView, ActionWrapperView, FileHeader
+from unityscaffold.interfaces.model import Dialect
+
+__all__ = ["ActionClasses", "RuntimeTypes", "build_action", "build_wrapper"]
+
+_RUNTIME = "global::RosSharp.RosBridgeClient."
+
+
+@dataclass(frozen=True, slots=True)
+class RuntimeTypes:
+    """The message classes ROS#'s action bases use (Header, GoalID/GoalStatus or GoalInfo)."""
+
+    header: CsClass
+    goal_id: CsClass | None = None
+    goal_status: CsClass | None = None
+    goal_info: CsClass | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ActionClasses:
+    goal: CsClass
+    result: CsClass
+    feedback: CsClass
+    action_goal: CsClass
+    action_result: CsClass
+    action_feedback: CsClass
+    action: CsClass
+
+
+# role -> (base, payload member, runtime parameters (type key or C# type, name)) per dialect
+_WRAPPERS = {
+    Dialect.ROS1: {
+        "action_goal": ("ActionGoal", "goal", (("header", "header"), ("goal_id", "goal_id"))),
+        "action_result": ("ActionResult", "result", (("header", "header"), ("goal_status", "status"))),
+        "action_feedback": ("ActionFeedback", "feedback",
+                            (("header", "header"), ("goal_status", "status"))),
+    },
+    Dialect.ROS2: {
+        "action_goal": ("ActionGoal", "args", (("header", "header"), ("goal_info", "goalInfo"))),
+        "action_result": ("ActionResult", "values", (
+            ("header", "header"), ("string", "action"), ("sbyte", "status"), ("bool", "result"),
+            ("string", "id"))),
+        "action_feedback": ("ActionFeedback", "values", (
+            ("header", "header"), ("string", "action"), ("string", "id"))),
+    },
+}  # fmt: skip
+_PAYLOAD_ROLE = {"action_goal": "goal", "action_result": "result", "action_feedback": "feedback"}
+
+
+def _base(ctx: FileContext, name: str) -> str:
+    return (_RUNTIME if ctx.qualify_runtime else "") + name
+
+
+def build_wrapper(ctx: FileContext, classes: ActionClasses, role: str, runtime: RuntimeTypes,
+                  ros_name: str, source: str, identity: str) -> ActionWrapperView:
+    cls: CsClass = getattr(classes, role)
+    payload_cls: CsClass = getattr(classes, _PAYLOAD_ROLE[role])
+    base, payload, params = _WRAPPERS[ctx.dialect][role]
+    runtime_classes = {key: getattr(runtime, key) for key, _ in params if hasattr(runtime, key)}
+    wanted = [(payload_cls, False), *((c, ctx.qualify_runtime) for c in runtime_classes.values())]
+    refs = References(cls.namespace, ctx.known, wanted)
+    typed = [(refs.name(runtime_classes[key], qualified=ctx.qualify_runtime)
+              if key in runtime_classes else key, name) for key, name in params]
+    payload_type = refs.name(payload_cls)
+    parameters = [*(f"{t} {n}" for t, n in typed), f"{payload_type} {payload}"]
+    return ActionWrapperView(
+        header=FileHeader(source, identity, ctx.define, cls.namespace, refs.usings),
+        class_name=cls.name,
+        base=f"{_base(ctx, base)}<{payload_type}>",
+        ros_name=literals.string_literal(ros_name),
+        doc=(),
+        payload=payload,
+        payload_type=payload_type,
+        parameters=", ".join(parameters),
+        base_arguments=", ".join(n for _, n in typed),
+        payload_parameter=payload,
+    )
+
+
+def build_action(ctx: FileContext, classes: ActionClasses, ros_name: str, source: str,
+                 identity: str) -> ActionView:
+    cls = classes.action
+    order = (classes.action_goal, classes.action_result, classes.action_feedback,
+             classes.goal, classes.result, classes.feedback)
+    refs = References(cls.namespace, ctx.known, [(c, False) for c in order])
+    names = [refs.name(c) for c in order]
+    parts = tuple(zip(names[:3], ("action_goal", "action_result", "action_feedback")))
+    return ActionView(
+        header=FileHeader(source, identity, ctx.define, cls.namespace, refs.usings),
+        class_name=cls.name,
+        base=f"{_base(ctx, 'Action')}<{', '.join(names)}>",
+        ros_name=literals.string_literal(ros_name),
+        doc=(),
+        parts=parts,
+        parameters=", ".join(f"{t} {n}" for t, n in parts),
+        base_arguments=", ".join(n for _, n in parts),
+    )

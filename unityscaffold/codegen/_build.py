@@ -1,0 +1,160 @@
+"""Build the view of one generated class from the interface model (no text, no I/O)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from unityscaffold.codegen import literals
+from unityscaffold.codegen._names import CsClass, KnownClasses, References
+from unityscaffold.codegen.naming import escape_identifier
+from unityscaffold.codegen.types import ROS1_TIME_TYPES, primitive_type
+from unityscaffold.codegen.views import (
+    ConstantView,
+    FileHeader,
+    MemberView,
+    MessageView,
+    SizeCheck,
+    doc_lines,
+)
+from unityscaffold.errors import LocatedError, SourceLocation, UserError
+from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
+
+__all__ = ["FileContext", "build_message", "message_references"]
+
+
+@dataclass(frozen=True, slots=True)
+class FileContext:
+    """What every file of one generation shares."""
+
+    dialect: Dialect
+    known: KnownClasses
+    message_base: CsClass
+    qualify_runtime: bool
+    class_of: Callable[[str, SourceLocation | None], CsClass]
+    time_class: Callable[[str], CsClass]
+
+    @property
+    def define(self) -> str:
+        return "ROS2" if self.dialect is Dialect.ROS2 else "!ROS2"
+
+
+def _where(spec: MessageSpec, field: Field | None = None) -> SourceLocation:
+    if field is not None and field.location is not None:
+        return field.location
+    return SourceLocation(spec.source or spec.full_name)
+
+
+def _element_class(ctx: FileContext, ref: TypeRef, spec: MessageSpec, field: Field) -> CsClass | None:
+    if ref.is_message:
+        return ctx.class_of(ref.base, _where(spec, field))
+    if ctx.dialect is Dialect.ROS1 and ref.base in ROS1_TIME_TYPES:
+        return ctx.time_class(ref.base)
+    return None
+
+
+def _initial(ref: TypeRef, element: str, primitive: str | None, default: object) -> str:
+    """The expression the default constructor assigns."""
+    if default is not None:
+        assert primitive is not None
+        if isinstance(default, tuple):
+            return literals.array_literal(default, primitive)
+        return literals.literal(default, primitive)  # type: ignore[arg-type]
+    if primitive is None:
+        single = f"new {element}()"
+    elif primitive == "string":
+        single = '""'
+    else:
+        single = literals.literal(0, primitive)
+    if ref.array is ArrayKind.NONE:
+        return single
+    if ref.array is ArrayKind.FIXED and ref.size:
+        if primitive is None or primitive == "string":
+            return f"new {element}[] {{ {', '.join([single] * ref.size)} }}"
+        return f"new {element}[{ref.size}]"
+    return f"new {element}[0]"
+
+
+def _check(ref: TypeRef, name: str, field_name: str) -> SizeCheck | None:
+    if ref.array is ArrayKind.FIXED:
+        condition = f"value != null && value.Length != {ref.size}"
+        text = f"{field_name} must have exactly {ref.size} elements, not "
+    elif ref.array is ArrayKind.BOUNDED:
+        condition = f"value != null && value.Length > {ref.size}"
+        text = f"{field_name} must have at most {ref.size} elements, not "
+    else:
+        return None
+    backing = "_" + name.lstrip("@")
+    return SizeCheck(backing, condition, f"{literals.string_literal(text)} + value.Length")
+
+
+def _member(ctx: FileContext, refs: References, spec: MessageSpec, field: Field) -> MemberView:
+    ref = field.type
+    primitive = primitive_type(ref.base, ctx.dialect)
+    cls = _element_class(ctx, ref, spec, field)
+    element = primitive if cls is None else refs.name(cls, qualified=ctx.qualify_runtime
+                                                        and ref.base in ROS1_TIME_TYPES)
+    assert element is not None
+    cs_type = element + ("[]" if ref.is_array else "")
+    name = escape_identifier(field.name)
+    try:
+        init = _initial(ref, element, primitive, field.default)
+    except ValueError as exc:
+        raise LocatedError.at(_where(spec, field), f"default value of '{field.name}': {exc}") from None
+    return MemberView(name, cs_type, init, doc_lines(field.comment), _check(ref, name, field.name))
+
+
+def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> ConstantView:
+    cs_type = primitive_type(constant.type, ctx.dialect)
+    where = constant.location or _where(spec)
+    if cs_type is None:
+        raise LocatedError.at(where, f"constant '{constant.name}' has type {constant.type}, "
+                              "which C# constants cannot have")
+    try:
+        value = literals.literal(constant.value, cs_type)
+    except ValueError as exc:
+        raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
+    return ConstantView(escape_identifier(constant.name), cs_type, value, doc_lines(constant.comment))
+
+
+def _check_names(spec: MessageSpec, class_name: str) -> None:
+    seen: dict[str, str] = {"RosMessageName": "the RosMessageName constant", class_name: "the class"}
+    for item in (*spec.constants, *spec.fields):
+        where = item.location or _where(spec)
+        try:
+            escape_identifier(item.name)
+        except UserError as exc:
+            raise LocatedError.at(where, exc.message, hint=exc.hint) from None
+        if item.name in seen:
+            raise LocatedError.at(where, f"'{item.name}' has the same C# name as {seen[item.name]} "
+                                  f"of class {class_name}", hint="C# allows one member per name, "
+                                  "and none named like its class; rename the field")
+        seen[item.name] = f"member '{item.name}'"
+
+
+def message_references(ctx: FileContext, spec: MessageSpec) -> list[tuple[CsClass, bool]]:
+    wanted = [(ctx.message_base, ctx.qualify_runtime)]
+    for field in spec.fields:
+        cls = _element_class(ctx, field.type, spec, field)
+        if cls is not None:
+            wanted.append((cls, ctx.qualify_runtime and field.type.base in ROS1_TIME_TYPES))
+    return wanted
+
+
+def build_message(ctx: FileContext, spec: MessageSpec, cls: CsClass, ros_name: str, source: str,
+                  identity: str) -> MessageView:
+    """The view of a message (or service half) ``spec`` as class ``cls``."""
+    _check_names(spec, cls.name)
+    refs = References(cls.namespace, ctx.known, message_references(ctx, spec))
+    members = tuple(_member(ctx, refs, spec, f) for f in spec.fields)
+    header = FileHeader(source, identity, ctx.define, cls.namespace, refs.usings)
+    return MessageView(
+        header=header,
+        class_name=cls.name,
+        base=refs.name(ctx.message_base, qualified=ctx.qualify_runtime),
+        ros_name=literals.string_literal(ros_name),
+        doc=doc_lines(spec.comment),
+        constants=tuple(_constant(ctx, spec, c) for c in spec.constants),
+        members=members,
+        parameters=", ".join(f"{m.cs_type} {m.name}" for m in members),
+    )

@@ -1,0 +1,285 @@
+"""Which classes one generation makes: units, names, paths, and what ROS# already ships."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import PurePath
+
+from unityscaffold.codegen._actions import ActionClasses, RuntimeTypes
+from unityscaffold.codegen._build import FileContext
+from unityscaffold.codegen._names import ROSSHARP_MESSAGE, CsClass, KnownClasses, rossharp_class
+from unityscaffold.codegen.naming import (
+    ROSSHARP_ROOT_NAMESPACE,
+    class_name,
+    namespace_segment,
+    validate_namespace,
+)
+from unityscaffold.codegen.shipped import ROS1_HANDWRITTEN, shipped_classes
+from unityscaffold.errors import LocatedError, SourceLocation, UserError
+from unityscaffold.interfaces.model import (
+    ActionSpec,
+    Dialect,
+    Interface,
+    MessageSpec,
+    ServiceSpec,
+)
+from unityscaffold.interfaces.registry import Registry
+
+__all__ = ["Plan", "PlannedClass", "make_plan", "source_name", "unit_key"]
+
+_ACTION_ROLES = ("goal", "result", "feedback", "action_goal", "action_result", "action_feedback",
+                 "action")  # fmt: skip
+_ROLE_SUFFIX = {"goal": "Goal", "result": "Result", "feedback": "Feedback",
+                "action_goal": "ActionGoal", "action_result": "ActionResult",
+                "action_feedback": "ActionFeedback", "action": "Action"}  # fmt: skip
+_WRAPPER_DEPENDENCIES = {
+    Dialect.ROS1: ("std_msgs/Header", "actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"),
+    Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo"),
+}
+_FOLDER = {"msg": "msg", "srv": "srv", "action": "action"}
+
+
+@dataclass(frozen=True, slots=True)
+class PlannedClass:
+    """One C# class: the unit (message, service or action) it belongs to and its role there."""
+
+    interface: Interface
+    role: str
+    spec: MessageSpec | None
+    cs_class: CsClass
+    ros_message_name: str
+    path: str
+    identity_of: Interface
+    skip_reason: str | None = None
+
+
+def source_name(interface: Interface) -> str:
+    """``pkg/msg/Name.msg``: the definition file, relative to its package's parent."""
+    if interface.source:
+        path = PurePath(interface.source)
+        return f"{interface.package}/{path.parent.name}/{path.name}"
+    return interface.full_name
+
+
+def _generated_parts(interface: Interface) -> tuple[MessageSpec, ...]:
+    if isinstance(interface, MessageSpec):
+        return (interface,)
+    if isinstance(interface, ServiceSpec):
+        return (interface.request, interface.response)
+    return (interface.goal, interface.result, interface.feedback)
+
+
+def _owned_names(interface: Interface) -> set[str]:
+    """Message names inside a service or action that have a class of their own."""
+    names = {p.full_name for p in _generated_parts(interface)}
+    if isinstance(interface, ActionSpec) and interface.dialect is Dialect.ROS1:
+        names |= {d.full_name for d in interface.derived}
+    return names
+
+
+def _units(registry: Registry, roots: list[Interface], extra: tuple[str, ...]) -> list[Interface]:
+    """Roots, the owners of service/action parts they use, and every free message used."""
+    units: dict[str, Interface] = {}
+    for root in roots:
+        owner = _owner(registry, root) if isinstance(root, MessageSpec) else None
+        units.setdefault(unit_key(owner or root), owner or root)
+    while True:
+        seeds = [p for u in units.values() for p in _generated_parts(u)]
+        if any(isinstance(u, ActionSpec) for u in units.values()):
+            seeds += [registry.message(name) for name in extra]
+        closure = registry.closure(seeds)
+        added = False
+        for message in closure:
+            owner = _owner(registry, message)
+            if owner is None:
+                units.setdefault(unit_key(message), message)
+                continue
+            if message.full_name not in _owned_names(owner) and message.owner is not None:
+                where = SourceLocation(message.source or message.full_name)
+                raise LocatedError.at(where, f"{message.full_name} is used as a field type, but "
+                                      "ROS# has no class for it", hint="use the service's or "
+                                      "action's own request, response, goal, result or feedback")
+            if unit_key(owner) not in units:
+                units[unit_key(owner)] = owner
+                added = True
+        if not added:
+            return [units[name] for name in sorted(units)]
+
+
+def unit_key(interface: Interface) -> str:
+    """``pkg/kind/Name``: unique even where ROS 1 has a service and an action of one name."""
+    return f"{interface.package}/{interface.kind.value}/{interface.name}"
+
+
+_ROS1_SUFFIXES = (("srv", "Request"), ("srv", "Response"), *(("action", s) for s in (
+    "ActionGoal", "ActionResult", "ActionFeedback", "Action", "Goal", "Result", "Feedback")))
+
+
+def _ros1_generated_owner(registry: Registry, message: MessageSpec) -> Interface | None:
+    """The .srv/.action whose generated .msg copy ``message`` is (Debian installs those)."""
+    for kind, suffix in _ROS1_SUFFIXES:
+        if message.name.endswith(suffix) and len(message.name) > len(suffix):
+            owner = registry.find(f"{message.package}/{kind}/{message.name[: -len(suffix)]}")
+            if owner is not None and not isinstance(owner, MessageSpec):
+                return owner
+    return None
+
+
+def _owner(registry: Registry, part: MessageSpec) -> Interface | None:
+    """The service or action that defines ``part``, or None for a free message."""
+    if part.owner is None:
+        if part.dialect is Dialect.ROS1:
+            return _ros1_generated_owner(registry, part)
+        return None
+    if part.dialect is Dialect.ROS1:
+        package, name = part.owner.split("/")
+        return registry.get(f"{package}/{part.subfolder}/{name}")
+    return registry.get(part.owner)
+
+
+class Plan:
+    """Every class of one generation, named, placed, and marked generated or skipped."""
+
+    def __init__(self, dialect: Dialect, root: str, custom_namespace: bool,
+                 items: list[PlannedClass]) -> None:
+        self.dialect = dialect
+        self.root = root
+        self.custom_namespace = custom_namespace
+        self.items = items
+        self.known = KnownClasses()
+        self.known.add(i.cs_class for i in items)
+        if not custom_namespace:
+            self.known.add(rossharp_class(ns, cls) for ns, cls in shipped_classes(dialect))
+        if dialect is Dialect.ROS1:
+            self.known.add(rossharp_class(ns, cls) for ns, cls in ROS1_HANDWRITTEN)
+        self.by_ros: dict[str, CsClass] = {}
+        self._roles: dict[str, dict[str, CsClass]] = {}
+        for item in items:
+            self._roles.setdefault(unit_key(item.interface), {})[item.role] = item.cs_class
+            if item.spec is not None:
+                self.by_ros[item.spec.full_name] = item.cs_class
+        for item in items:
+            if isinstance(item.interface, ActionSpec) and dialect is Dialect.ROS1:
+                for derived in item.interface.derived:
+                    role = _role_of_derived(item.interface, derived)
+                    self.by_ros[derived.full_name] = self._roles[unit_key(item.interface)][role]
+        if dialect is Dialect.ROS1:
+            self.runtime = RuntimeTypes(rossharp_class("Std", "Header"),
+                                        goal_id=rossharp_class("Actionlib", "GoalID"),
+                                        goal_status=rossharp_class("Actionlib", "GoalStatus"))
+        else:
+            self.runtime = RuntimeTypes(rossharp_class("Std", "Header"),
+                                        goal_info=rossharp_class("Action", "GoalInfo"))
+
+    @property
+    def generated(self) -> list[PlannedClass]:
+        return [i for i in self.items if i.skip_reason is None]
+
+    @property
+    def skipped(self) -> list[PlannedClass]:
+        return [i for i in self.items if i.skip_reason is not None]
+
+    def class_of(self, full_name: str, used_at: SourceLocation | None) -> CsClass:
+        try:
+            return self.by_ros[full_name]
+        except KeyError:
+            raise LocatedError.at(used_at or SourceLocation(full_name),
+                                  f"no C# class for {full_name}") from None
+
+    def action_classes(self, interface: Interface) -> ActionClasses:
+        roles = self._roles[unit_key(interface)]
+        return ActionClasses(**{role: roles[role] for role in _ACTION_ROLES})
+
+    def class_map(self) -> dict[str, dict[str, CsClass]]:
+        result = {name: dict(roles) for name, roles in sorted(self._roles.items())}
+        for name, cls in sorted(self.by_ros.items()):
+            result.setdefault(name, {"message": cls})
+        return result
+
+    def file_context(self) -> FileContext:
+        return FileContext(
+            dialect=self.dialect,
+            known=self.known,
+            message_base=ROSSHARP_MESSAGE,
+            qualify_runtime=self.custom_namespace,
+            class_of=self.class_of,
+            time_class=lambda base: rossharp_class("Std", base.capitalize()),
+        )
+
+
+def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> str:
+    suffix = derived.name[len(action.name):]
+    return {v: k for k, v in _ROLE_SUFFIX.items()}[suffix]
+
+
+def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
+    segment = namespace_segment(unit.package)
+    namespace = f"{root}.{segment}"
+
+    def planned(role: str, spec: MessageSpec | None, name: str, ros_name: str, folder: str,
+                identity: Interface) -> PlannedClass:
+        return PlannedClass(unit, role, spec, CsClass(namespace, name), ros_name,
+                            f"{segment}/{folder}/{name}.cs", identity)
+
+    if isinstance(unit, MessageSpec):
+        return [planned("message", unit, class_name(unit.name), unit.full_name, "msg", unit)]
+    base = class_name(unit.name)
+    if isinstance(unit, ServiceSpec):
+        return [planned("request", unit.request, base + "Request", unit.full_name, "srv",
+                        unit.request),
+                planned("response", unit.response, base + "Response", unit.full_name, "srv",
+                        unit.response)]
+    prefix = f"{unit.package}/" if unit.dialect is Dialect.ROS1 else f"{unit.package}/action/"
+    parts = {"goal": unit.goal, "result": unit.result, "feedback": unit.feedback}
+    derived = {d.name[len(unit.name):]: d for d in unit.derived}
+    items = []
+    for role in _ACTION_ROLES:
+        suffix = _ROLE_SUFFIX[role]
+        identity: Interface = parts.get(role) or (derived.get(suffix, unit)
+                                                  if unit.dialect is Dialect.ROS1 else unit)
+        items.append(planned(role, parts.get(role), base + suffix, f"{prefix}{unit.name}{suffix}",
+                             "action", identity))
+    return items
+
+
+def _skip_reason(item: PlannedClass, dialect: Dialect, include_shipped: bool) -> str | None:
+    key = (item.cs_class.namespace.rsplit(".", 1)[-1], item.cs_class.name)
+    if dialect is Dialect.ROS1 and ROS1_HANDWRITTEN.get(key) == item.ros_message_name:
+        return f"ROS# hand-writes {item.cs_class.full_name} (never generated)"
+    if include_shipped:
+        return None
+    shipped = shipped_classes(dialect).get(key)
+    if shipped is None:
+        return None
+    if shipped != item.ros_message_name:
+        raise UserError(f"{item.interface.full_name} would become {item.cs_class.full_name}, "
+                        f"a class ROS# already ships for {shipped}",
+                        hint="generate into another root namespace with --namespace")
+    return f"ROS# ships {item.cs_class.full_name}"
+
+
+def _check_unique(items: list[PlannedClass]) -> None:
+    seen: dict[CsClass, PlannedClass] = {}
+    for item in items:
+        other = seen.setdefault(item.cs_class, item)
+        if other is not item:
+            raise UserError(f"{other.interface.full_name} and {item.interface.full_name} would both "
+                            f"become C# class {item.cs_class.full_name}",
+                            hint="ROS# names classes by package namespace and type name; rename "
+                            "one type, or generate them separately with --namespace")
+
+
+def make_plan(registry: Registry, roots: list[Interface], dialect: Dialect, include_shipped: bool,
+              namespace: str | None) -> Plan:
+    if namespace is not None:
+        validate_namespace(namespace)
+    extra = _WRAPPER_DEPENDENCIES[dialect] if namespace is None else ()
+    items: list[PlannedClass] = []
+    for unit in _units(registry, roots, extra):
+        items += _classes_of(unit, namespace or ROSSHARP_ROOT_NAMESPACE)
+    _check_unique(items)
+    if namespace is None:
+        items = [PlannedClass(i.interface, i.role, i.spec, i.cs_class, i.ros_message_name, i.path,
+                              i.identity_of, _skip_reason(i, dialect, include_shipped))
+                 for i in items]
+    return Plan(dialect, namespace or ROSSHARP_ROOT_NAMESPACE, namespace is not None, items)

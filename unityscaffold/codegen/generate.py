@@ -1,0 +1,116 @@
+"""Interfaces -> generated C# files for ROS#: pure, no writing.
+
+``generate(registry, roots, options)`` takes the types asked for, adds their whole dependency
+closure, decides for every class whether ROS# already ships it, and renders the rest.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import PurePosixPath
+
+from unityscaffold.codegen import _plan
+from unityscaffold.codegen._actions import ActionClasses, build_action, build_wrapper
+from unityscaffold.codegen._build import FileContext, build_message
+from unityscaffold.codegen._identity import Identities
+from unityscaffold.codegen._names import CsClass
+from unityscaffold.codegen._plan import PlannedClass, Plan
+from unityscaffold.codegen._templates import environment
+from unityscaffold.codegen.views import View
+from unityscaffold.interfaces.model import Dialect, Interface
+from unityscaffold.interfaces.registry import Registry
+
+__all__ = ["GeneratedFile", "Generation", "Options", "SkippedClass", "generate"]
+
+
+@dataclass(frozen=True, slots=True)
+class Options:
+    """How to generate: the ROS version, and the ROS#-shipped/namespace policy.
+
+    ``namespace`` replaces ROS#'s root ``RosSharp.RosBridgeClient.MessageTypes``; then every
+    type is generated (nothing can clash with ROS#'s classes).
+    """
+
+    dialect: Dialect
+    include_shipped: bool = False
+    namespace: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class GeneratedFile:
+    """One C# file: ``path`` is relative to the output folder (``Geometry/msg/Pose.cs``)."""
+
+    path: str
+    text: str
+    ros_type: str
+    role: str
+    cs_class: CsClass
+
+
+@dataclass(frozen=True, slots=True)
+class SkippedClass:
+    """A class not generated, and why (ROS# ships it, or hand-writes it)."""
+
+    path: str
+    ros_type: str
+    role: str
+    cs_class: CsClass
+    reason: str
+
+
+@dataclass(frozen=True, slots=True)
+class Generation:
+    """What one run produces, and which C# class each ROS type maps to.
+
+    ``classes`` maps each interface full name (``pkg/Name``, ``pkg/msg/Name``, ``pkg/srv/Name``,
+    ``pkg/action/Name``; also ROS 1 service halves and action messages, ``pkg/NameRequest``…) to
+    its classes by role: ``message``; ``request``/``response``; ``goal``, ``result``,
+    ``feedback``, ``action_goal``, ``action_result``, ``action_feedback``, ``action``.
+    """
+
+    files: tuple[GeneratedFile, ...]
+    skipped: tuple[SkippedClass, ...]
+    classes: dict[str, dict[str, CsClass]] = field(default_factory=dict)
+
+    def message_class(self, name: str) -> CsClass:
+        """The class of a message type (as users or field types name it)."""
+        return self.classes[name]["message"]
+
+
+def _render(view: View) -> str:
+    return environment().get_template(view.template).render(view=view)
+
+
+def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> View:
+    source = _plan.source_name(item.interface)
+    if item.role in ("message", "request", "response", "goal", "result", "feedback"):
+        assert item.spec is not None
+        return build_message(ctx, item.spec, item.cs_class, item.ros_message_name, source,
+                             ids.label(item.identity_of))
+    classes = plan.action_classes(item.interface)
+    if item.role == "action":
+        return build_action(ctx, classes, item.ros_message_name, source, ids.label(item.identity_of))
+    return build_wrapper(ctx, classes, item.role, plan.runtime, item.ros_message_name, source,
+                         ids.label(item.identity_of))
+
+
+def generate(registry: Registry, roots: Iterable[Interface], options: Options) -> Generation:
+    """C# for ``roots`` and every type they use; raises ``UserError`` on bad input."""
+    plan = _plan.make_plan(registry, list(roots), options.dialect, options.include_shipped,
+                           options.namespace)
+    ctx = plan.file_context()
+    ids = Identities(registry, options.dialect)
+    files: list[GeneratedFile] = []
+    for item in plan.generated:
+        text = _render(_view(plan, ctx, ids, item))
+        files.append(GeneratedFile(item.path, text, item.interface.full_name, item.role,
+                                   item.cs_class))
+    skipped = [SkippedClass(i.path, i.interface.full_name, i.role, i.cs_class, i.skip_reason or "")
+               for i in plan.skipped]
+    return Generation(tuple(sorted(files, key=lambda f: f.path)),
+                      tuple(sorted(skipped, key=lambda s: s.path)), plan.class_map())
+
+
+def relative_paths(generation: Generation) -> Sequence[PurePosixPath]:
+    return [PurePosixPath(f.path) for f in generation.files]

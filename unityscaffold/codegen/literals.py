@@ -1,0 +1,84 @@
+"""C# literals for ROS constants and default values.
+
+Each literal has the C# type of the member it initialises: ``f`` for float32, ``.0`` or an
+exponent for float64, ``L``/``UL`` for 64-bit integers, ``float.NaN``/``double.PositiveInfinity``
+for non-finite values, and strings with every character outside printable ASCII escaped.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from unityscaffold.interfaces.model import Scalar
+
+__all__ = ["array_literal", "literal", "string_literal"]
+
+_INT_RANGES = {
+    "sbyte": (-(2**7), 2**7 - 1), "byte": (0, 2**8 - 1), "short": (-(2**15), 2**15 - 1),
+    "ushort": (0, 2**16 - 1), "int": (-(2**31), 2**31 - 1), "uint": (0, 2**32 - 1),
+    "long": (-(2**63), 2**63 - 1), "ulong": (0, 2**64 - 1),
+}  # fmt: skip
+_ESCAPES = {"\\": "\\\\", '"': '\\"', "\0": "\\0", "\a": "\\a", "\b": "\\b", "\f": "\\f",
+            "\n": "\\n", "\r": "\\r", "\t": "\\t", "\v": "\\v"}  # fmt: skip
+
+
+def string_literal(text: str) -> str:
+    """A regular C# string literal; non-ASCII characters become ``\\uXXXX`` (UTF-16 units)."""
+    out = []
+    for char in text:
+        if char in _ESCAPES:
+            out.append(_ESCAPES[char])
+        elif " " <= char <= "~":
+            out.append(char)
+        else:
+            data = char.encode("utf-16-be")
+            out += [f"\\u{data[i] << 8 | data[i + 1]:04X}" for i in range(0, len(data), 2)]
+    return '"' + "".join(out) + '"'
+
+
+def _float_literal(value: float, cs_type: str) -> str:
+    if math.isnan(value):
+        return f"{cs_type}.NaN"
+    if math.isinf(value):
+        return f"{cs_type}.{'Positive' if value > 0 else 'Negative'}Infinity"
+    text = repr(float(value))
+    if cs_type == "float":
+        return text + "f"
+    return text if ("." in text or "e" in text) else text + ".0"
+
+
+def _int_literal(value: int, cs_type: str) -> str:
+    low, high = _INT_RANGES[cs_type]
+    if not low <= value <= high:
+        raise ValueError(f"{value} does not fit in a C# {cs_type} ({low}..{high})")
+    suffix = {"long": "L", "ulong": "UL", "uint": "U"}.get(cs_type, "")
+    return f"{value}{suffix}"
+
+
+def literal(value: Scalar, cs_type: str) -> str:
+    """The C# literal of ``value`` as a ``cs_type`` (a C# built-in type keyword)."""
+    if cs_type == "bool":
+        return "true" if value else "false"
+    if cs_type == "string":
+        return string_literal(str(value))
+    if cs_type in ("float", "double"):
+        return _float_literal(float(value), cs_type)
+    if cs_type in _INT_RANGES:
+        if isinstance(value, bool):
+            value = int(value)
+        if isinstance(value, float):
+            if not value.is_integer():
+                raise ValueError(f"{value} is not an integer")
+            value = int(value)
+        if isinstance(value, str):
+            value = int(value, 0)
+        return _int_literal(value, cs_type)
+    raise ValueError(f"no C# literal for type {cs_type}")
+
+
+def array_literal(values: Sequence[Scalar], cs_type: str) -> str:
+    """``new T[] { a, b }`` (``new T[0]`` when empty) for an array default value."""
+    if not values:
+        return f"new {cs_type}[0]"
+    return f"new {cs_type}[] {{ {', '.join(literal(v, cs_type) for v in values)} }}"

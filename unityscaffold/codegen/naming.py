@@ -1,0 +1,97 @@
+"""C# naming rules for ROS# code: namespaces from package names, class names, identifiers.
+
+Small pure functions; the package rule is ROS#'s ``MsgAutoGenUtilities.ResolvePackageName``.
+"""
+
+from __future__ import annotations
+
+import re
+
+from unityscaffold.errors import UserError
+
+__all__ = [
+    "CSHARP_KEYWORDS",
+    "ROSSHARP_ROOT_NAMESPACE",
+    "class_name",
+    "escape_identifier",
+    "is_identifier",
+    "namespace_segment",
+    "pascal_case",
+    "validate_namespace",
+]
+
+ROSSHARP_ROOT_NAMESPACE = "RosSharp.RosBridgeClient.MessageTypes"
+
+_RESERVED = frozenset("""
+abstract as base bool break byte case catch char checked class const continue decimal default
+delegate do double else enum event explicit extern false finally fixed float for foreach goto if
+implicit in int interface internal is lock long namespace new null object operator out override
+params private protected public readonly ref return sbyte sealed short sizeof stackalloc static
+string struct switch this throw true try typeof uint ulong unchecked unsafe ushort using virtual
+void volatile while
+""".split())
+_CONTEXTUAL = frozenset("""
+add alias and ascending args async await by descending dynamic equals file from get global group
+init into join let managed nameof nint not notnull nuint on or orderby partial record remove
+required scoped select set unmanaged value var when where with yield
+""".split())
+CSHARP_KEYWORDS: frozenset[str] = _RESERVED | _CONTEXTUAL
+"""Reserved and contextual C# keywords; a ROS name on this list gets an ``@`` prefix."""
+
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_PACKAGE_MARKERS = ("_msgs", "_srvs", "_actions")
+
+
+def is_identifier(name: str) -> bool:
+    """Whether ``name`` is an ASCII C# identifier (keywords included: they can be escaped)."""
+    return _IDENTIFIER.fullmatch(name) is not None
+
+
+def escape_identifier(name: str) -> str:
+    """``name`` as a C# identifier: keywords get ``@`` (the JSON name stays ``name``)."""
+    if not is_identifier(name):
+        raise UserError(f"'{name}' cannot become a C# identifier",
+                        hint="C# names use letters, digits and '_' and do not start with a digit")
+    return f"@{name}" if name in CSHARP_KEYWORDS else name
+
+
+def pascal_case(snake: str) -> str:
+    """``unique_identifier`` -> ``UniqueIdentifier``: each ``_``-separated part capitalised."""
+    return "".join(part[:1].upper() + part[1:] for part in snake.split("_") if part)
+
+
+def namespace_segment(package: str) -> str:
+    """The namespace segment ROS# uses for ``package`` (``geometry_msgs`` -> ``Geometry``).
+
+    A name containing ``_msgs``, ``_srvs`` or ``_actions`` loses everything from its last ``_``
+    and is PascalCased (``foo_msgs_ext`` -> ``FooMsgs``); another name with ``_`` is PascalCased
+    whole; any other name is capitalised.
+    """
+    if any(marker in package for marker in _PACKAGE_MARKERS):
+        segment = pascal_case(package[: package.rindex("_")])
+    elif "_" in package:
+        segment = pascal_case(package)
+    else:
+        segment = package[:1].upper() + package[1:]
+    if not is_identifier(segment) or segment in CSHARP_KEYWORDS:
+        raise UserError(f"package '{package}' cannot become a C# namespace (got '{segment}')",
+                        hint="use --namespace, or a package name that starts with a letter")
+    return segment
+
+
+def class_name(ros_name: str) -> str:
+    """A ROS type name as a C# class name: its first letter capitalised, as ROS# does."""
+    name = ros_name[:1].upper() + ros_name[1:]
+    if not is_identifier(name):
+        raise UserError(f"type name '{ros_name}' cannot become a C# class name")
+    return name
+
+
+def validate_namespace(namespace: str) -> str:
+    """A user-given root namespace: dot-separated identifiers, none a reserved keyword."""
+    parts = namespace.split(".")
+    bad = [p for p in parts if not is_identifier(p) or p in _RESERVED]
+    if bad:
+        raise UserError(f"'{namespace}' is not a C# namespace name",
+                        hint="use dot-separated identifiers such as MyRobot.Messages")
+    return namespace

@@ -1,0 +1,128 @@
+"""View models: everything a template prints, computed in Python.
+
+Each view names its template in ``template``; templates only lay the values out. Strings here
+are final C# text (escaped identifiers, type names, literals, ``///`` lines).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+__all__ = [
+    "ActionView",
+    "ActionWrapperView",
+    "ConstantView",
+    "FileHeader",
+    "MemberView",
+    "MessageView",
+    "SizeCheck",
+    "View",
+    "doc_lines",
+]
+
+
+def _xml_escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def doc_lines(comment: tuple[str, ...] | list[str]) -> tuple[str, ...]:
+    """A comment as an XML doc ``<summary>``, one ``///`` line per line; () when empty."""
+    lines = [_xml_escape(line.rstrip()) for line in comment]
+    while lines and not lines[-1]:
+        lines.pop()
+    while lines and not lines[0]:
+        lines.pop(0)
+    if not lines:
+        return ()
+    body = tuple(f"/// {line}" if line else "///" for line in lines)
+    return ("/// <summary>", *body, "/// </summary>")
+
+
+@dataclass(frozen=True, slots=True)
+class FileHeader:
+    """The top of a generated file: provenance, ROS version guard, namespace and usings."""
+
+    source: str
+    identity: str
+    define: str
+    namespace: str
+    usings: tuple[str, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class ConstantView:
+    name: str
+    cs_type: str
+    value: str
+    doc: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class SizeCheck:
+    """A setter guard: ``condition`` (on ``value``) means the array breaks its size rule."""
+
+    field: str
+    condition: str
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
+class MemberView:
+    """One auto-property (or a checked property over ``check.field``)."""
+
+    name: str
+    cs_type: str
+    init: str
+    doc: tuple[str, ...] = ()
+    check: SizeCheck | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class MessageView:
+    """A class deriving from ROS#'s ``Message``: messages and service halves."""
+
+    template: ClassVar[str] = "rossharp/Message.cs.jinja"
+    header: FileHeader
+    class_name: str
+    base: str
+    ros_name: str
+    doc: tuple[str, ...]
+    constants: tuple[ConstantView, ...]
+    members: tuple[MemberView, ...]
+    parameters: str
+
+
+@dataclass(frozen=True, slots=True)
+class ActionWrapperView:
+    """``<A>ActionGoal``/``ActionResult``/``ActionFeedback`` on ROS#'s generic bases."""
+
+    template: ClassVar[str] = "rossharp/ActionWrapper.cs.jinja"
+    header: FileHeader
+    class_name: str
+    base: str
+    ros_name: str
+    doc: tuple[str, ...]
+    payload: str
+    payload_type: str
+    parameters: str
+    base_arguments: str
+    payload_parameter: str
+
+
+@dataclass(frozen=True, slots=True)
+class ActionView:
+    """``<A>Action`` on ROS#'s ``Action<…>`` base."""
+
+    template: ClassVar[str] = "rossharp/Action.cs.jinja"
+    header: FileHeader
+    class_name: str
+    base: str
+    ros_name: str
+    doc: tuple[str, ...]
+    parts: tuple[tuple[str, str], ...]
+    parameters: str
+    base_arguments: str
+
+
+View = MessageView | ActionWrapperView | ActionView
