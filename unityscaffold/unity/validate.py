@@ -131,10 +131,10 @@ def _scene_roots(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> l
             expected.add(doc.file_id)
     if set(listed) == expected and len(listed) == len(expected):
         return []
-    missing = sorted(expected - set(listed))
-    extra = sorted(set(listed) - expected)
-    return [loc.at(scene_roots[-1], "m_Roots",
-                   f"does not match the root objects (missing {missing}, not roots {extra})")]
+    parts = [f"omits root &{i}" for i in sorted(expected - set(listed))]
+    parts += [f"lists &{i}, which is not a root" for i in sorted(set(listed) - expected)]
+    parts += [f"lists &{i} twice" for i, n in sorted(Counter(listed).items()) if n > 1]
+    return [loc.at(scene_roots[-1], "m_Roots", "does not match the scene's roots: " + "; ".join(parts))]
 
 
 def _parses(loc: _Locator, doc: Doc) -> list[Diagnostic]:
