@@ -59,9 +59,11 @@ def _topic(connection: Connection, dialect: Dialect) -> DiscoveredTopic:
         definition = connection.msgdef.data
     elif connection.msgdef.format is MessageDefinitionFormat.IDL:
         definition = connection.msgdef.data  # refused with a clear message when split
-    md5 = connection.digest if dialect is Dialect.ROS1 and connection.digest else None
-    return DiscoveredTopic(connection.topic, connection.msgtype, Direction.SUBSCRIBE, md5,
-                           definition)
+    kind, md5 = connection.msgtype, None
+    if dialect is Dialect.ROS1:
+        # rosbags names every type pkg/msg/Type; a ROS 1 bag stores pkg/Type.
+        kind, md5 = kind.replace("/msg/", "/", 1), connection.digest or None
+    return DiscoveredTopic(connection.topic, kind, Direction.SUBSCRIBE, md5, definition)
 
 
 def discover_bag(path: Path, *, names: NameFilter) -> Discovery:
