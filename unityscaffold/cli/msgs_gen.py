@@ -2,8 +2,107 @@
 
 from __future__ import annotations
 
+import difflib
+import os
+from pathlib import Path
+
 import typer
+
+from unityscaffold.apply.files import Action, FileChange, plan_files, write_files
+from unityscaffold.codegen import Generation, Options, generate
+from unityscaffold.codegen.layout import output_files
+from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.interfaces.model import Dialect, Interface
+from unityscaffold.interfaces.registry import Registry
+
+__all__ = ["register", "resolve_roots", "run"]
+
+
+def _package_interfaces(registry: Registry, package: str) -> list[Interface]:
+    files = [f for f in registry.files() if f.package == package]
+    if not files:
+        close = difflib.get_close_matches(package, registry.packages(), n=3, cutoff=0.6)
+        hint = f"did you mean {' or '.join(close)}?" if close else "give pkg/Type or a package name"
+        raise UserError(f"unknown type or package '{package}'", hint=hint)
+    found: list[Interface] = []
+    problems = []
+    for file in files:
+        try:
+            found.append(registry.parse(file))
+        except LocatedError as error:
+            problems.extend(error.diagnostics)
+    if problems:
+        raise LocatedError(problems)
+    return found
+
+
+def resolve_roots(registry: Registry, names: list[str], everything: bool) -> list[Interface]:
+    """The interfaces named by ``pkg/Type`` or package names (``--all``: every type found)."""
+    if everything:
+        found, problems = registry.parse_all()
+        if problems:
+            raise LocatedError(problems)
+        return found
+    if not names:
+        raise UserError("no types given", hint="name types (pkg/Type) or packages, or use --all")
+    roots: list[Interface] = []
+    for name in names:
+        roots += [registry.get(name)] if "/" in name else _package_interfaces(registry, name)
+    return roots
+
+
+def _check_out_dir(out: Path) -> None:
+    if out.exists() and not out.is_dir():
+        raise UserError(f"output folder {out} exists and is not a folder",
+                        hint="pass a folder with --out")
+
+
+def run(names: list[str], out: Path, ros: int, paths: list[Path], include_shipped: bool,
+        namespace: str | None, everything: bool) -> tuple[Generation, list[FileChange]]:
+    """Generate and write; returns what was generated and each file's change."""
+    _check_out_dir(out)
+    dialect = Dialect(ros)
+    registry = Registry.load(dialect, paths)
+    roots = resolve_roots(registry, names, everything)
+    generation = generate(registry, roots, Options(dialect, include_shipped, namespace))
+    changes = plan_files(output_files(generation, out))
+    write_files(changes)
+    return generation, changes
+
+
+def _report(generation: Generation, changes: list[FileChange], out: Path) -> None:
+    base = out.resolve()
+    for change in changes:
+        if change.action is not Action.UNCHANGED:
+            reason = f" ({change.reason})" if change.reason else ""
+            typer.echo(f"{change.action.value:9} {os.path.relpath(change.path, base)}{reason}")
+    for skipped in generation.skipped:
+        typer.echo(f"{'skip':9} {skipped.path} ({skipped.ros_type}): {skipped.reason}")
+    counts = {a: sum(1 for c in changes if c.action is a) for a in Action}
+    typer.echo(f"{len(generation.files)} classes generated, {len(generation.skipped)} skipped; "
+               f"files: {counts[Action.CREATE]} created, {counts[Action.UPDATE]} updated, "
+               f"{counts[Action.UNCHANGED]} unchanged, {counts[Action.SKIP]} kept")
 
 
 def register(app: typer.Typer) -> None:
     """Add the ``gen`` command to the ``msgs`` group."""
+
+    @app.command("gen")
+    def gen(
+        names: list[str] = typer.Argument(None, metavar="TYPE_OR_PACKAGE...",
+                                          help="Types (pkg/Type, pkg/msg/Type) or packages."),
+        out: Path = typer.Option(..., "--out", "-o", help="Output folder, e.g. "
+                                 "Assets/RosMessages."),
+        ros: int = typer.Option(2, "--ros", min=1, max=2, help="ROS version: 1 or 2."),
+        paths: list[Path] = typer.Option([], "--path", help="Extra folder with ROS packages "
+                                         "(searched first; repeatable)."),
+        include_shipped: bool = typer.Option(False, "--include-shipped",
+                                             help="Also generate types ROS# already ships."),
+        namespace: str = typer.Option(None, "--namespace", help="Root namespace instead of "
+                                      "RosSharp.RosBridgeClient.MessageTypes (generates all)."),
+        everything: bool = typer.Option(False, "--all", help="Generate every type found."),
+    ) -> None:
+        """Generate ROS# C# classes for types and everything they use."""
+        generation, changes = run(list(names or []), out, ros, list(paths), include_shipped,
+                                  namespace, everything)
+        _report(generation, changes, out)
