@@ -147,9 +147,9 @@ def _rates(r: Reader, m: YMap, direction: Direction | None
                         hint="use 'rate' (messages per second) to set how often Unity publishes")
     rate = throttle = queue = None
     if direction is not Direction.SUBSCRIBE:
-        rate = r.positive_number(m, "rate", " (messages per second)")
+        rate = r.positive_number(m, "rate", "messages per second")
     if direction is not Direction.PUBLISH:
-        throttle = r.integer(m, "throttle", 0, " (milliseconds)")
+        throttle = r.integer(m, "throttle", 0, "milliseconds")
         queue = r.integer(m, "queue", 1)
     return rate, throttle, queue
 

@@ -41,8 +41,8 @@ def project_path(reader: Reader, entry: YEntry, value: str, project_root: Path, 
     if not _portable(reader, entry, value):
         return None
     if _is_absolute(value):
-        reader.invalid(entry, expected, hint="write the path relative to the project root "
-                       f"({project_root.as_posix()})")
+        reader.invalid(entry, expected, hint="write the path relative to the project root, "
+                       "the folder that holds Assets/")
         return None
     norm = posixpath.normpath(value)
     if norm == ".." or norm.startswith("../"):

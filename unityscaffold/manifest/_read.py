@@ -60,20 +60,24 @@ class Reader:
     def mapping(self, node: YNode, section: Section) -> YMap | None:
         """``node`` as a mapping with only known keys and every required key, else None."""
         if not isinstance(node, YMap):
-            self.error(node.location, f"expected a {section.label} mapping, found "
-                       f"{describe(node)}", expected=f"keys {', '.join(section.names)}")
+            self.error(node.location, f"this {section.label} is {describe(node)}, not a mapping",
+                       expected=f"a mapping with keys {', '.join(section.names)}")
             return None
+        meant: set[str] = set()
         for entry in node.entries:
             if entry.key not in section.names:
+                hint = suggest(entry.key, section.names)
+                if hint:
+                    meant.add(hint.split("'")[1])
                 self.error(entry.key_location,
                            f"unknown key '{entry.key}' in {section.label}",
-                           expected=one_of(sorted(section.names)),
-                           hint=suggest(entry.key, section.names))
+                           expected=one_of(sorted(section.names)), hint=hint)
+        # A misspelt required key is reported once, as unknown, not also as missing.
         for name in section.required:
-            if node.get(name) is None:
+            if node.get(name) is None and name not in meant:
                 doc = section.key(name).doc.replace("`", "")
                 self.error(node.location, f"{section.label} is missing required key '{name}'",
-                           hint=f"{name}: {doc[0].lower()}{doc[1:]}")
+                           hint=f"{name}: {doc}")
         return node
 
     def scalar(self, m: YMap, key: str, types: tuple[type, ...], expected: str,
@@ -107,7 +111,7 @@ class Reader:
         return value if isinstance(value, bool) else None
 
     def integer(self, m: YMap, key: str, minimum: int, unit: str = "") -> int | None:
-        expected = f"a whole number ≥ {minimum}{unit}"
+        expected = f"a whole number{' of ' + unit if unit else ''} ≥ {minimum}"
         value = self.scalar(m, key, (int,), expected)
         if not isinstance(value, int):
             return None
@@ -117,7 +121,7 @@ class Reader:
         return value
 
     def positive_number(self, m: YMap, key: str, unit: str) -> float | None:
-        expected = f"a number > 0{unit}"
+        expected = f"a number of {unit} > 0"
         value = self.scalar(m, key, (int, float), expected)
         if not isinstance(value, (int, float)):
             return None

@@ -83,7 +83,10 @@ def compose(text: str, path: str) -> YNode | None:
 
 def _syntax_error(exc: MarkedYAMLError, path: str, lines: list[str]) -> LocatedError:
     mark = exc.problem_mark or exc.context_mark
-    problem = exc.problem or exc.context or "syntax error"
+    problem = (exc.problem or exc.context or "syntax error")
+    problem = problem.replace("'<stream end>'", "the end of the file")
+    if exc.context and problem.startswith("but "):
+        problem = f"{exc.context}, {problem}"  # ruamel splits some sentences in two
     loc = _location(path, lines, mark.line, mark.column) if mark else SourceLocation(path)
     hint = None
     if "'\\t'" in problem:
@@ -91,12 +94,26 @@ def _syntax_error(exc: MarkedYAMLError, path: str, lines: list[str]) -> LocatedE
     elif "another document" in problem:
         hint = "a manifest is one YAML document: remove the '---' separator"
     elif exc.context and exc.context_mark and exc.problem_mark:
-        hint = f"{exc.context} (line {exc.context_mark.line + 1})"
+        what = next((name for key, name in _CONTEXTS.items() if key in exc.context), None)
+        if what:
+            hint = f"look at the {what} that starts on line {exc.context_mark.line + 1}"
     return LocatedError.at(loc, f"invalid YAML: {problem}", hint=hint)
+
+
+_CONTEXTS = {
+    "flow sequence": "[...] list",
+    "flow mapping": "{...} mapping",
+    "block mapping": "mapping",
+    "block collection": "list or mapping",
+    "quoted scalar": "quoted text",
+}
 
 
 def _location(path: str, lines: list[str], line: int, col: int) -> SourceLocation:
     """A 1-based location from ruamel's 0-based mark, with the source line for the caret."""
+    if lines and line >= len(lines):
+        # the end of a file that ends with a newline: show the end of its last line
+        line, col = len(lines) - 1, len(lines[-1])
     source = lines[line] if 0 <= line < len(lines) else None
     return SourceLocation(path, line + 1, col + 1, source)
 

@@ -191,7 +191,7 @@ def _connector(r: Reader, top: YMap, project_root: Path, scene: str | None) -> C
         url=r.text(m, "url", "a rosbridge URL such as ws://localhost:9090", spec.URL,
                    hint="rosbridge listens on ws:// (or wss://) host:port")
         or str(defaults["url"]),
-        timeout=r.integer(m, "timeout", 1, " (seconds)") or _DEFAULT_TIMEOUT,
+        timeout=r.integer(m, "timeout", 1, "seconds") or _DEFAULT_TIMEOUT,
         serializer=next(s for s in Serializer if s.key == (serializer or defaults["serializer"])),
         protocol=next(p for p in Protocol if p.key == (protocol or defaults["protocol"])),
         locations=locations(m),
