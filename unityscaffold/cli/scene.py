@@ -2,6 +2,124 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import typer
 
+from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.unity.index import GameObject
+from unityscaffold.unity.project import find_project_root, script_index, script_ref_for_file
+from unityscaffold.unity.scene import SceneDocument
+from unityscaffold.unity.setvalue import component_label, parse_assignment, parse_value
+from unityscaffold.unity.values import ScriptRef
+
 app = typer.Typer(help="Inspect Unity scenes and attach components.", no_args_is_help=True)
+
+_SET_HELP = (
+    "Set a serialized field (repeatable; order = declaration order for new fields). VALUE is a "
+    "YAML scalar or flow value: 10, 0.1, true, text, 'a: b', [1, 2], {x: 0, y: 1}, "
+    "{fileID: N}, {fileID: F, guid: G, type: 3}. Same-scene references: @Path/To/Object for a "
+    "GameObject, @Path/To/Object:Transform or @RosConnector:RosConnector for a component by "
+    "class or script name; '@@x' is the literal string '@x'."
+)
+
+
+def _script_names(scene_path: Path) -> dict[str, str]:
+    root = find_project_root(scene_path.parent)
+    if root is None:
+        return {}
+    return {guid: info.class_name for guid, info in script_index(root).items()}
+
+
+def _load_checked(path: Path) -> SceneDocument:
+    scene = SceneDocument.load(path)
+    problems = scene.validate()
+    if problems:
+        raise LocatedError(problems)
+    return scene
+
+
+def _node_json(scene: SceneDocument, go: GameObject, names: dict[str, str]) -> dict[str, object]:
+    comps = [] if go.is_prefab_instance else scene.components_of(go)
+    return {
+        "path": go.path,
+        "name": go.name,
+        "fileID": go.file_id,
+        "prefabInstance": go.is_prefab_instance,
+        "components": [
+            {"fileID": c.file_id, "class": c.type_name, "name": component_label(c, names),
+             "script": None if c.script is None else
+             {"guid": c.script.guid, "fileID": c.script.file_id, "name": names.get(c.script.guid)}}
+            for c in comps
+        ],
+    }
+
+
+@app.command("ls")
+def ls(
+    scene: Path = typer.Argument(..., help="A .unity scene or .prefab file."),
+    as_json: bool = typer.Option(False, "--json", help="Print JSON instead of a tree."),
+) -> None:
+    """Show the hierarchy with each GameObject's components (script names when resolvable)."""
+    doc = SceneDocument.load(scene)
+    names = _script_names(scene)
+    if as_json:
+        nodes = [_node_json(doc, go, names) for go in doc.gameobjects()]
+        payload = {"path": str(scene), "generation": doc.generation.label, "gameobjects": nodes}
+        typer.echo(json.dumps(payload, indent=2))
+        return
+    for depth, node in doc.hierarchy.walk():
+        go = doc._view(node.file_id)
+        if go.is_prefab_instance:
+            typer.echo(f"{'  ' * depth}{go.name}  (prefab instance &{go.file_id})")
+            continue
+        labels = ", ".join(component_label(c, names) for c in doc.components_of(go))
+        typer.echo(f"{'  ' * depth}{go.name}  [{labels}]")
+
+
+def _script_ref(script: Path | None, guid: str | None, dll_class: str | None) -> ScriptRef:
+    if (script is None) == (guid is None):
+        raise UserError("give exactly one of --script FILE.cs or --guid GUID")
+    if script is not None:
+        if dll_class:
+            raise UserError("--dll-class goes with --guid (the DLL's GUID), not --script")
+        return script_ref_for_file(script)
+    assert guid is not None
+    try:
+        if dll_class:
+            namespace, _, name = dll_class.rpartition(".")
+            return ScriptRef.for_dll_class(guid, namespace, name)
+        return ScriptRef(guid)
+    except ValueError as exc:
+        raise UserError(str(exc), hint="a GUID is 32 lowercase hex digits, as in .meta files") from None
+
+
+@app.command("attach")
+def attach(
+    scene: Path = typer.Argument(..., help="A .unity scene or .prefab file."),
+    gameobject: str = typer.Option(..., "--gameobject", "-g", help="Hierarchy path: Robot/base_link."),
+    script: Path | None = typer.Option(None, "--script", help="The .cs file (its .meta gives the GUID)."),
+    guid: str | None = typer.Option(None, "--guid", help="The script's (or DLL's) GUID."),
+    dll_class: str | None = typer.Option(None, "--dll-class", help="Namespace.Class inside the DLL given by --guid."),
+    assignments: list[str] = typer.Option([], "--set", help=_SET_HELP, metavar="NAME=VALUE"),
+    create: bool = typer.Option(False, "--create", help="Create missing GameObjects on the path."),
+    dry_run: bool = typer.Option(False, "--dry-run", help="Print the unified diff; write nothing."),
+) -> None:
+    """Attach a MonoBehaviour to a GameObject, or update the one already there (idempotent)."""
+    ref = _script_ref(script, guid, dll_class)
+    pairs = [parse_assignment(a) for a in assignments]
+    doc = _load_checked(scene)
+    names = _script_names(scene)
+    go = doc.ensure_gameobject(gameobject, create=create)
+    fields = [(name, parse_value(value, doc, names)) for name, value in pairs]
+    comp = doc.ensure_component(go, ref, fields)
+    label = ref.class_name or names.get(ref.guid) or ref.guid
+    if dry_run:
+        typer.echo(doc.diff() or f"no changes: {label} on {go.path} is up to date", nl=False)
+        if not doc.changed:
+            typer.echo("")
+        return
+    wrote = doc.write()
+    state = "updated" if wrote else "unchanged"
+    typer.echo(f"{state} {scene}: {label} on {go.path} (&{comp.file_id})")
