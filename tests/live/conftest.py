@@ -24,7 +24,7 @@ DATA = Path(__file__).parent / "data"
 TEST_PACKAGE = DATA / "scaffold_test_msgs"
 TEST_TIME_LIMIT = 60  # seconds; every network step in these tests has its own, shorter timeout
 # Types the rospy node and the fake rosbridge use; ".srv" marks services.
-TYPES = ["std_msgs/String", "sensor_msgs/Imu", "scaffold_test_msgs/Reading",
+TYPES = ["std_msgs/String", "sensor_msgs/Imu", "scaffold_test_msgs/Reading", "rosgraph_msgs/Log",
          "geometry_msgs/Twist", "std_msgs/Int32", "std_srvs/Trigger.srv",
          "scaffold_test_msgs/Calibrate.srv"]
 

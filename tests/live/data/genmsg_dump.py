@@ -25,7 +25,37 @@ def search_path(roots):
 
 def describe(context, spec):
     return {"type": spec.full_name, "md5sum": gentools.compute_md5(context, spec),
-            "definition": gentools.compute_full_text(context, spec)}
+            "definition": gentools.compute_full_text(context, spec),
+            "typedefs": typedefs(context, spec)}
+
+
+def typedef(spec):
+    """rosapi's TypeDef of one message (constants sorted by name, as rosapi lists them)."""
+    fields = spec.parsed_fields()
+    constants = sorted(spec.constants, key=lambda c: c.name)
+    return {"type": spec.full_name, "fieldnames": [f.name for f in fields],
+            "fieldtypes": [f.base_type for f in fields],
+            "fieldarraylen": [-1 if not f.is_array else (f.array_len or 0) for f in fields],
+            "examples": ["{}" if not f.is_builtin else "0" for f in fields],
+            "constnames": [c.name for c in constants],
+            "constvalues": [str(c.val) for c in constants]}
+
+
+def typedefs(context, spec):
+    """The root's TypeDef, then one per nested type, depth first, each once."""
+    found, order = {}, []
+
+    def walk(current):
+        for field in current.parsed_fields():
+            if field.is_builtin or field.base_type in found:
+                continue
+            nested = context.get_registered(field.base_type)
+            found[field.base_type] = nested
+            order.append(nested)
+            walk(nested)
+
+    walk(spec)
+    return [typedef(spec)] + [typedef(s) for s in order]
 
 
 def main():

@@ -10,6 +10,7 @@ becomes a ``UserError`` naming the bridge and the call.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import json
 import time
@@ -45,11 +46,14 @@ class RosbridgeClient:
         self.url, self.timeout = url, timeout
         self._ids = itertools.count(1)
         self._socket: ClientConnection | None = None
+        self._stack = contextlib.ExitStack()
 
     def __enter__(self) -> RosbridgeClient:
         try:
-            self._socket = connect(self.url, open_timeout=self.timeout,
-                                   close_timeout=self.timeout, max_size=64 * 1024 * 1024)
+            # Entered as a context manager: websockets 16+ deprecates bare connect().
+            self._socket = self._stack.enter_context(
+                connect(self.url, open_timeout=self.timeout, close_timeout=self.timeout,
+                        max_size=64 * 1024 * 1024))
         except ConnectionRefusedError:
             raise UserError(f"no rosbridge at {self.url} (connection refused)") from None
         except TimeoutError:
@@ -63,8 +67,7 @@ class RosbridgeClient:
 
     def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
                  trace: TracebackType | None) -> None:
-        if self._socket is not None:
-            self._socket.close()
+        self._stack.close()
 
     def call(self, service: str, args: dict[str, Any] | None = None) -> dict[str, Any]:
         """Call ``service`` and return its response values."""
