@@ -34,7 +34,7 @@ _ROLE_SUFFIX = {"goal": "Goal", "result": "Result", "feedback": "Feedback",
                 "action_feedback": "ActionFeedback", "action": "Action"}  # fmt: skip
 _WRAPPER_DEPENDENCIES = {
     Dialect.ROS1: ("std_msgs/Header", "actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"),
-    Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo"),
+    Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus"),
 }
 _FOLDER = {"msg": "msg", "srv": "srv", "action": "action"}
 
