@@ -22,8 +22,8 @@ __all__ = ["YEntry", "YMap", "YNode", "YScalar", "YSeq", "compose"]
 
 _CORE = "tag:yaml.org,2002:"
 _SCALAR_TAGS = {f"{_CORE}{t}" for t in ("str", "int", "float", "bool", "null", "timestamp")}
-# A few hundred thousand nodes is far beyond any real manifest; the cap stops alias bombs.
-_MAX_NODES = 200_000
+# Tens of thousands of nodes is far beyond any real manifest; the cap stops alias bombs.
+_MAX_NODES = 50_000
 
 
 @dataclass(frozen=True, slots=True)
@@ -78,7 +78,10 @@ def compose(text: str, path: str) -> YNode | None:
         raise LocatedError.at(SourceLocation(path), "the YAML is nested too deeply") from None
     if node is None:
         return None
-    return _Converter(path, lines, yaml).convert(node)
+    try:
+        return _Converter(path, lines, yaml).convert(node)
+    except RecursionError:
+        raise LocatedError.at(SourceLocation(path), "the YAML is nested too deeply") from None
 
 
 def _syntax_error(exc: MarkedYAMLError, path: str, lines: list[str]) -> LocatedError:
