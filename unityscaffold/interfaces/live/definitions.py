@@ -149,14 +149,16 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
     wider = Registry.load(discovery.dialect, [staging, *search_paths])
     warnings: list[str] = []
     for item in (*discovery.topics, *discovery.services):
-        registry = own if item.definition else wider
+        reconstructed = bool(item.definition)
+        registry = own if reconstructed else wider
         spec = _lookup(registry, item.type, discovery.source)
         if spec is None:
             warnings.append(f"no definition of {item.type} (used by {item.name}): add the folder "
                             "with its package to the manifest's interfaces")
             continue
         if discovery.dialect is Dialect.ROS1 and item.md5:
-            _check_md5(registry, spec, item.md5, item.name, discovery.source)
+            _check_md5(registry, spec, item.md5, item.name, discovery.source,
+                       reconstructed=reconstructed)
     return warnings
 
 
@@ -171,15 +173,19 @@ def _lookup(registry: Registry, type_name: str, source: str) -> MessageSpec | Se
 
 
 def _check_md5(registry: Registry, spec: MessageSpec | ServiceSpec, reported: str, name: str,
-               source: str) -> None:
+               source: str, *, reconstructed: bool) -> None:
     try:
         computed = Ros1Identity(registry).md5sum(spec)
     except UserError as error:
         raise UserError(f"the definition of {spec.full_name} (used by {name}) is incomplete: "
                         f"{error.message}") from None
-    if computed != reported:
-        where = spec.source or spec.full_name
-        raise UserError(
-            f"md5sum mismatch for {spec.full_name} (used by {name}): {source} reported "
-            f"{reported}, the definition gives {computed}",
-            hint=f"the system runs a different version of {spec.full_name} than {where}")
+    if computed == reported:
+        return
+    if reconstructed:
+        hint = (f"the definition {source} sent for {spec.full_name} does not match its own "
+                "md5sum; the publisher may have been built from other .msg files than it runs")
+    else:
+        hint = (f"the system runs a different version of {spec.full_name} than "
+                f"{spec.source or 'the local definition'}")
+    raise UserError(f"md5sum mismatch for {spec.full_name} (used by {name}): {source} reported "
+                    f"{reported}, the definition gives {computed}", hint=hint)
