@@ -34,8 +34,8 @@ def discover_command(
     manifest: Path = typer.Argument(Path("robot.yaml"), help="The manifest to add to."),
     master: str | None = typer.Option(None, "--master", metavar="URL",
                                       help="A ROS 1 master, e.g. http://localhost:11311."),
-    rosbridge: str | None = typer.Option(None, "--rosbridge", metavar="URL",
-                                         help="A rosbridge (ROS 1 or 2), e.g. ws://localhost:9090."),
+    rosbridge: str | None = typer.Option(None, "--rosbridge", metavar="URL", help="A "
+                                         "rosbridge (ROS 1 or 2), e.g. ws://localhost:9090."),
     bag: Path | None = typer.Option(None, "--bag", metavar="FILE",
                                     help="A ROS 1 .bag, a ROS 2 .db3/.mcap file or bag folder."),
     select: str | None = typer.Option(None, "--select", metavar="REGEX",

@@ -162,7 +162,8 @@ def _service_pairs(service: DiscoveredService) -> list[tuple[str, str]]:
             ("gameobject", DEFAULT_GAMEOBJECT)]
 
 
-def _add_topics(seq: CommentedSeq, topics: Iterable[DiscoveredTopic]) -> tuple[list[str], list[str]]:
+def _add_topics(seq: CommentedSeq, topics: Iterable[DiscoveredTopic]
+                ) -> tuple[list[str], list[str]]:
     listed = _listed_names(seq)
     added, skipped = [], []
     for topic in topics:

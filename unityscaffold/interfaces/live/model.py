@@ -10,7 +10,7 @@ from __future__ import annotations
 import enum
 import re
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 from unityscaffold.errors import UserError
@@ -115,7 +115,6 @@ class NameFilter:
     select: re.Pattern[str] | None = None
     exclude: re.Pattern[str] | None = None
     include_system: bool = False
-    _cache: dict[str, bool] = field(default_factory=dict, compare=False, repr=False)
 
     @classmethod
     def of(cls, select: str | None = None, exclude: str | None = None, *,
