@@ -1,0 +1,78 @@
+"""Bad input to ``scaffold msgs gen``: a clear message, exit 2, no traceback, nothing written."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from conftest import DATA
+
+from unityscaffold.cli import main
+
+BAD = DATA / "bad" / "ros1"
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["nowhere_msgs/Nothing"], "unknown ROS 1 type 'nowhere_msgs/Nothing'"),
+        (["no_such_package"], "unknown type or package 'no_such_package'"),
+        (["cycle_msgs/A"], "cycle: cycle_msgs/A -> cycle_msgs/B -> cycle_msgs/A"),
+        (["unknown_msgs/Uses"], "nowhere_msgs/Missing"),
+        (["class_member_msgs/Speed"], "'Speed' has the same C# name as the class"),
+        (["--namespace", "My.class.Ns", "class_member_msgs"], "not a C# namespace name"),
+        ([], "no types given"),
+        (["clash_msgs/Thing", "clash_actions/Thing"],
+         "would both become C# class RosSharp.RosBridgeClient.MessageTypes.Clash.Thing"),
+    ],
+)
+def test_bad_input_exits_2_with_a_message_and_writes_nothing(
+        args: list[str], message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "out"
+    code = main(["msgs", "gen", "--ros", "1", "--path", str(BAD), "--out", str(out), *args])
+    captured = capsys.readouterr()
+    assert code == 2
+    assert message in captured.err
+    assert "Traceback" not in captured.err + captured.out
+    assert not out.exists()
+
+
+def test_output_folder_that_is_a_file_is_refused(tmp_path: Path,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "out"
+    out.write_text("not a folder")
+    code = main(["msgs", "gen", "--ros", "1", "--path", str(DATA / "ros1"), "--out", str(out),
+                 "scaffold_test_msgs/Range"])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert "exists and is not a folder" in err
+    assert "Traceback" not in err
+    assert out.read_text() == "not a folder"
+
+
+def test_a_file_blocking_a_package_folder_leaves_nothing_half_written(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "ScaffoldTest").write_text("in the way")
+    code = main(["msgs", "gen", "--ros", "1", "--path", str(DATA / "ros1"), "--out", str(out),
+                 "--include-shipped", "scaffold_test_msgs/Kitchen"])
+    assert code == 2
+    assert "is not a folder" in capsys.readouterr().err
+    assert sorted(p.name for p in out.iterdir()) == ["ScaffoldTest"]
+
+
+def test_second_run_writes_nothing_and_reports_skipped_types(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    args = ["msgs", "gen", "--ros", "1", "--path", str(DATA / "ros1"), "--out",
+            str(tmp_path / "out"), "scaffold_test_msgs/Range", "geometry_msgs/PoseStamped"]
+    assert main(args) == 0
+    first = capsys.readouterr().out
+    assert "create    ScaffoldTest/msg/Range.cs" in first
+    assert "skip      Geometry/msg/PoseStamped.cs (geometry_msgs/PoseStamped): ROS# ships" in first
+    stamps = {p: p.stat().st_mtime_ns for p in (tmp_path / "out").rglob("*")}
+    assert main(args) == 0
+    second = capsys.readouterr().out
+    assert "create    " not in second and "update    " not in second
+    assert "0 created, 0 updated" in second
+    assert stamps == {p: p.stat().st_mtime_ns for p in (tmp_path / "out").rglob("*")}

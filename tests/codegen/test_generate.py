@@ -1,0 +1,101 @@
+"""What gets generated: ROS#'s contract per ROS version, shipped types, and the class map."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import generate_data
+
+from unityscaffold.codegen import Generation
+from unityscaffold.codegen.views import doc_lines
+from unityscaffold.interfaces.model import Dialect
+
+
+def _text(generation: Generation, path: str) -> str:
+    return next(f.text for f in generation.files if f.path == path)
+
+
+@pytest.fixture(scope="module")
+def ros1() -> Generation:
+    return generate_data(Dialect.ROS1, ["scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"])
+
+
+@pytest.fixture(scope="module")
+def ros2() -> Generation:
+    return generate_data(Dialect.ROS2, ["scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"])
+
+
+def test_service_halves_both_carry_the_service_name(ros1: Generation, ros2: Generation) -> None:
+    for half in ("Request", "Response"):
+        assert ('RosMessageName = "scaffold_test_msgs/Lookup";'
+                in _text(ros1, f"ScaffoldTest/srv/Lookup{half}.cs"))
+        assert ('RosMessageName = "scaffold_test_msgs/srv/Lookup";'
+                in _text(ros2, f"ScaffoldTest/srv/Lookup{half}.cs"))
+
+
+def test_actions_get_rossharps_seven_classes(ros1: Generation, ros2: Generation) -> None:
+    suffixes = ("Goal", "Result", "Feedback", "ActionGoal", "ActionResult", "ActionFeedback",
+                "Action")
+    for generation, prefix in ((ros1, "scaffold_test_msgs/"), (ros2, "scaffold_test_msgs/action/")):
+        for suffix in suffixes:
+            text = _text(generation, f"ScaffoldTest/action/Cook{suffix}.cs")
+            assert f'RosMessageName = "{prefix}Cook{suffix}";' in text
+
+
+def test_ros1_and_ros2_action_wrappers_use_their_bases(ros1: Generation, ros2: Generation) -> None:
+    assert ("CookActionGoal(Header header, GoalID goal_id, CookGoal goal) : base(header, goal_id)"
+            in _text(ros1, "ScaffoldTest/action/CookActionGoal.cs"))
+    assert ("(Header header, string action, string id, CookFeedback values) : base(header, action, id)"
+            in _text(ros2, "ScaffoldTest/action/CookActionFeedback.cs"))
+
+
+def test_files_are_guarded_by_the_ros_version(ros1: Generation, ros2: Generation) -> None:
+    assert all("\n#if !ROS2\n" in f.text and f.text.endswith("}\n#endif\n") for f in ros1.files)
+    assert all("\n#if ROS2\n" in f.text for f in ros2.files)
+
+
+def test_shipped_types_are_skipped_and_mapped_to_rossharps_classes(ros1: Generation) -> None:
+    skipped = {s.ros_type: s for s in ros1.skipped}
+    assert "ROS# ships" in skipped["std_msgs/Header"].reason
+    assert "Std/msg/Header.cs" not in {f.path for f in ros1.files}
+    header = ros1.message_class("std_msgs/Header")
+    assert header.full_name == "RosSharp.RosBridgeClient.MessageTypes.Std.Header"
+
+
+def test_class_map_names_every_role(ros1: Generation, ros2: Generation) -> None:
+    roles = ros1.classes["scaffold_test_msgs/action/Cook"]
+    assert roles["action_goal"].name == "CookActionGoal"
+    assert ros2.classes["scaffold_test_msgs/srv/Lookup"]["response"].full_name == (
+        "RosSharp.RosBridgeClient.MessageTypes.ScaffoldTest.LookupResponse")
+    assert ros2.message_class("scaffold_test_msgs/msg/Kitchen").name == "Kitchen"
+
+
+def test_ros2_byte_is_unsigned_and_ros1_byte_signed() -> None:
+    ros1 = generate_data(Dialect.ROS1, ["scaffold_test_msgs/Kitchen"])
+    ros2 = generate_data(Dialect.ROS2, ["scaffold_test_msgs/Kitchen"])
+    assert "public sbyte[] signed_bytes" in _text(ros1, "ScaffoldTest/msg/Kitchen.cs")
+    ros2_text = _text(ros2, "ScaffoldTest/msg/Kitchen.cs")
+    assert "public byte raw_byte { get; set; }" in ros2_text
+    assert "public const byte RAW = 255;" in ros2_text
+
+
+def test_ros2_defaults_are_properties_initialised_in_the_constructor() -> None:
+    text = _text(generate_data(Dialect.ROS2, ["scaffold_test_msgs/Kitchen"]),
+                 "ScaffoldTest/msg/Kitchen.cs")
+    assert "public float scale { get; set; }" in text
+    assert "this.scale = 1.5f;" in text
+    assert "this.offsets = new long[] { -1L, 0L, 9223372036854775807L };" in text
+    assert 'this.wide = "na\\u00EFve";' in text
+    assert "if (value != null && value.Length > 4)" in text
+
+
+def test_include_shipped_generates_shipped_types_but_never_ros1_time() -> None:
+    generation = generate_data(Dialect.ROS1, ["std_msgs/Time", "std_msgs/Header"],
+                               include_shipped=True)
+    assert [f.path for f in generation.files] == ["Std/msg/Header.cs"]
+    assert "hand-writes" in generation.skipped[0].reason
+
+
+def test_doc_comments_escape_xml_and_drop_blank_ends() -> None:
+    assert doc_lines(("", "a < b & c > d", "", "x", "")) == (
+        "/// <summary>", "/// a &lt; b &amp; c &gt; d", "///", "/// x", "/// </summary>")
+    assert doc_lines(()) == ()
