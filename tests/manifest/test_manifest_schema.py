@@ -94,3 +94,17 @@ def test_patterns_mean_the_same_in_python_and_json_schema() -> None:
         check = jsonschema.Draft202012Validator({"type": "string", "pattern": pattern})
         for sample in samples:
             assert bool(re.search(pattern, sample)) == check.is_valid(sample), (name, sample)
+
+
+def test_docs_describe_every_key_in_its_section() -> None:
+    docs = (REPO / "docs" / "manifest.md").read_text(encoding="utf-8")
+    headings = {"manifest": "## Top level", "connector": "## `connector`",
+                "topic": "## `topics`", "service": "## `services`",
+                "component": "## `components`"}
+    for section in spec.SECTIONS:
+        start = docs.index(headings[section.ref])
+        end = docs.find("\n## ", start + 1)
+        rows = [line.split("|")[1].strip().strip("`")
+                for line in docs[start:end if end > 0 else None].splitlines()
+                if line.startswith("| `")]
+        assert rows == list(section.names), section.label
