@@ -90,7 +90,10 @@ def plan_files(desired: Iterable[DesiredFile]) -> list[FileChange]:
     return [_change(by_path[path]) for path in sorted(by_path)]
 
 
-def _make_folders(folder: Path, created: list[Path]) -> None:
+def _make_folders(folder: Path, created: list[Path], ready: set[Path]) -> None:
+    if folder in ready:
+        return
+    ready.add(folder)
     missing = [p for p in (folder, *folder.parents) if not p.exists()]
     for path in reversed(missing):
         path.mkdir()
@@ -124,9 +127,10 @@ def write_files(changes: Sequence[FileChange]) -> list[Path]:
     created: list[Path] = []
     temps: list[tuple[Path, Path]] = []
     mode = _new_file_mode()
+    ready: set[Path] = set()
     try:
         for change in todo:
-            _make_folders(change.path.parent, created)
+            _make_folders(change.path.parent, created, ready)
             temps.append((_write_temp(change, mode), change.path))
     except BaseException as exc:
         for temp, _ in temps:
