@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import difflib
 import json
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -136,3 +137,26 @@ def test_a_missing_manifest_is_reported(tmp_path: Path,
     run = run_cli(capsys, "discover", str(tmp_path / "robot.yaml"), "--master",
                   f"http://127.0.0.1:{free_port()}")
     assert_clean_failure(run, tmp_path, {}, "manifest not found")
+
+
+def test_discovered_definitions_generate_compiling_csharp(
+        ros1_system: Ros1System, project: Path, mcs: str,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """The point of discovery: C# for the robot's types without its workspace. The custom
+    package's folder is on no search path; its types come from the cache alone."""
+    from tests.codegen.conftest import MCS_FLAGS, STUB
+
+    run = run_cli(capsys, "discover", str(project / "robot.yaml"), "--master", ros1_system.url,
+                  "--timeout", "1", "--exclude", "ghost")
+    assert run.code == 0, run.err
+    out = project / "Generated"
+    gen = run_cli(capsys, "msgs", "gen", "--ros", "1", "--path", str(project / "ros_definitions"),
+                  "--include-shipped", "--out", str(out), "scaffold_test_msgs/Reading",
+                  "sensor_msgs/Imu", "std_msgs/String", "geometry_msgs/Twist",
+                  "actionlib_msgs/GoalStatusArray")  # the ROS# stub's action classes use these
+    assert gen.code == 0, gen.err
+    sources = sorted(out.rglob("*.cs"))
+    assert any(p.name == "Reading.cs" for p in sources)
+    done = subprocess.run([mcs, *MCS_FLAGS, f"-out:{project / 'robot.dll'}", str(STUB),
+                           *map(str, sources)], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
