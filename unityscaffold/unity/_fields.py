@@ -24,7 +24,7 @@ __all__ = [
 ]
 
 _KEY_RE = re.compile(r"^  ([^\s\-#'\"][^:\n]*):(?: |$)", re.M)
-_REF_RE = re.compile(r"\{fileID: (-?\d+)\}")
+LOCAL_REF_RE = re.compile(r"\{fileID: (-?\d+)\}")
 _SCRIPT_RE = re.compile(r"\{fileID: (-?\d+), guid: ([0-9a-f]{32}),\s+type: (\d+)\}")
 _ITEM_REF_RE = re.compile(r"^  - (?:component: |\d+: )?\{fileID: (-?\d+)\}", re.M)
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
@@ -57,12 +57,33 @@ def field_text(doc: Doc, key: str) -> str | None:
     return None if span is None else doc.text[span[0] : span[1]]
 
 
+_INT_AT = re.compile(r"-?\d+")
+_ITEMS_AT = re.compile(r"(?:  - .*\n|    .*\n)*")
+
+
+def _key_line(text: str, key: str) -> int:
+    """Offset just past ``key:`` on a top-level line, or -1 (str.find beats a regex scan)."""
+    needle = f"\n  {key}:"
+    at = text.find(needle)
+    while at >= 0:
+        end = at + len(needle)
+        if end < len(text) and text[end] in " \n":
+            return end
+        at = text.find(needle, end)
+    return -1
+
+
 def field_value(doc: Doc, key: str) -> str | None:
     """The raw text after ``key: `` on a one-line field (None when absent or multi-line)."""
-    text = field_text(doc, key)
-    if text is None or text.count("\n") > 1:
+    text = doc.text
+    at = _key_line(text, key)
+    if at < 0:
         return None
-    return text[len(key) + 4 :].rstrip("\n")
+    eol = text.find("\n", at)
+    following = text[eol + 1 : eol + 5]
+    if following.startswith(("    ", "  - ", "\n")):
+        return None
+    return text[at + 1 : eol]
 
 
 def parse_field(doc: Doc, key: str) -> object:
@@ -84,18 +105,23 @@ def scalar_value(doc: Doc, key: str) -> str | None:
 
 
 def ref_value(doc: Doc, key: str) -> int | None:
-    """The fileID of a one-line ``key: {fileID: N}`` (or ``{fileID: N, guid: …}``) field."""
-    text = field_text(doc, key)
-    if text is None:
+    """The fileID of a ``key: {fileID: N}`` (or ``{fileID: N, guid: …}``) field."""
+    text = doc.text
+    at = _key_line(text, key)
+    if at < 0 or not text.startswith(" {fileID: ", at):
         return None
-    match = re.search(r"\{fileID: (-?\d+)", text)
-    return int(match.group(1)) if match else None
+    match = _INT_AT.match(text, at + 10)
+    return int(match.group(0)) if match else None
 
 
 def list_refs(doc: Doc, key: str) -> list[int]:
     """fileIDs in an indentless list: ``- {fileID: N}``, ``- component: {…}`` or ``- 4: {…}``."""
-    text = field_text(doc, key)
-    return [] if text is None else [int(m.group(1)) for m in _ITEM_REF_RE.finditer(text)]
+    text = doc.text
+    at = _key_line(text, key)
+    if at < 0 or text[at] != "\n":
+        return []
+    block = _ITEMS_AT.match(text, at + 1)
+    return [int(m) for m in _ITEM_REF_RE.findall(block.group(0))] if block else []
 
 
 def script_of(doc: Doc) -> tuple[int, str, int] | None:
@@ -109,4 +135,4 @@ def script_of(doc: Doc) -> tuple[int, str, int] | None:
 
 def local_refs(text: str) -> list[re.Match[str]]:
     """Every guid-less ``{fileID: N}`` in ``text``: references to objects in the same file."""
-    return list(_REF_RE.finditer(text))
+    return list(LOCAL_REF_RE.finditer(text))

@@ -17,7 +17,9 @@ __all__ = ["Doc", "SplitFile", "split_text"]
 
 HEADER_RE = re.compile(r"^--- !u!(\d+) &(-?\d+)( stripped)?$", re.M)
 _ANY_HEADER_RE = re.compile(r"^---", re.M)
-_TYPE_LINE_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*:\n")
+_SEPARATOR = "\n--- !u!"
+_HEAD_RE = re.compile(r"(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:\n")
+_REF_ITEMS_RE = re.compile(r"(?:  - \{fileID: -?\d+\}\n)+")
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
 
@@ -72,47 +74,60 @@ def split_text(text: str, path: str) -> SplitFile:
             path, text, 0, "not a Unity YAML file: it does not start with '%YAML'",
             hint="Unity writes text scenes only with Asset Serialization Mode 'Force Text'",
         )
-    headers = list(HEADER_RE.finditer(text))
-    _check_headers(text, path, headers)
-    docs = [_make_doc(text, path, m, headers[i + 1].start() if i + 1 < len(headers) else len(text))
-            for i, m in enumerate(headers)]
-    _check_complete(text, path, headers, docs)
-    return SplitFile(text[: headers[0].start()], docs, crlf)
-
-
-def _check_headers(text: str, path: str, headers: list[re.Match[str]]) -> None:
-    if len(headers) != len(_ANY_HEADER_RE.findall(text)):
-        good = {m.start() for m in headers}
-        bad = next(m.start() for m in _ANY_HEADER_RE.finditer(text) if m.start() not in good)
-        raise _error(path, text, bad, "malformed document header",
-                     hint="expected '--- !u!<classID> &<fileID>' optionally followed by ' stripped'")
-    if not headers:
+    pieces = text.split(_SEPARATOR)
+    if len(pieces) - 1 != text.count("\n---"):
+        raise _malformed(text, path)
+    if len(pieces) == 1:
         raise _error(path, text, len(text), "no '--- !u!<class> &<fileID>' document in the file")
-    prolog = text[: headers[0].start()]
-    if any(line and not line.startswith("%") for line in prolog.split("\n")):
+    prolog = pieces[0] + "\n"
+    if any(line and not line.startswith("%") for line in pieces[0].split("\n")):
         raise _error(path, text, 0, "unexpected text before the first document",
                      hint="only %YAML/%TAG directives may precede the first '--- !u!' header")
+    docs = []
+    last = len(pieces) - 1
+    for index in range(1, len(pieces)):
+        piece = pieces[index]
+        match = _HEAD_RE.match(piece)
+        if match is None:
+            raise _bad_document(text, path, pieces, index)
+        body = _SEPARATOR[1:] + piece + ("\n" if index < last else "")
+        docs.append(Doc(int(match.group(1)), int(match.group(2)), match.group(3) is not None, body))
+    _check_complete(text, path, docs)
+    return SplitFile(prolog, docs, crlf)
 
 
-def _make_doc(text: str, path: str, match: re.Match[str], end: int) -> Doc:
-    body_start = match.end() + 1
-    if not _TYPE_LINE_RE.match(text, body_start):
-        raise _error(path, text, min(body_start, len(text) - 1),
-                     f"document {match.group(0)} has no 'TypeName:' line",
-                     hint="the file may be truncated or edited by hand")
-    return Doc(int(match.group(1)), int(match.group(2)), bool(match.group(3)), text[match.start():end])
+def _malformed(text: str, path: str) -> LocatedError:
+    bad = next(m.start() for m in _ANY_HEADER_RE.finditer(text) if not HEADER_RE.match(text, m.start()))
+    return _error(path, text, bad, "malformed document header",
+                  hint="expected '--- !u!<classID> &<fileID>' optionally followed by ' stripped'")
 
 
-def _check_complete(text: str, path: str, headers: list[re.Match[str]], docs: list[Doc]) -> None:
+def _bad_document(text: str, path: str, pieces: list[str], index: int) -> LocatedError:
+    offset = len(pieces[0]) + 1 + sum(len(p) + len(_SEPARATOR) for p in pieces[1:index])
+    header = HEADER_RE.match(text, offset)
+    if header is None:
+        return _malformed(text, path)
+    return _error(path, text, min(header.end() + 1, len(text) - 1),
+                  f"document {header.group(0)} has no 'TypeName:' line",
+                  hint="the file may be truncated or edited by hand")
+
+
+def _check_complete(text: str, path: str, docs: list[Doc]) -> None:
     truncated_hint = "the file looks truncated; restore it from version control"
     if not text.endswith("\n"):
         raise _error(path, text, len(text) - 1, "the file does not end with a line break",
                      hint=truncated_hint)
     last = docs[-1]
+    body = last.text[last.text.index("\n") + 1 :]
+    if len(body) > 65536:
+        # a long SceneRoots list: complete item lines up to the final newline show it is whole
+        tail = body[body.index("\n", len(body) - 4096) + 1 :]
+        if _REF_ITEMS_RE.fullmatch(tail):
+            return
     try:
-        yaml.load(last.text[last.text.index("\n") + 1 :], Loader=_BaseLoader)
+        yaml.load(body, Loader=_BaseLoader)
     except yaml.YAMLError as exc:
-        raise _error(path, text, headers[-1].start(),
+        raise _error(path, text, len(text) - len(last.text),
                      f"the last document {last.header} is not valid YAML ({_first_line(exc)})",
                      hint=truncated_hint) from None
 

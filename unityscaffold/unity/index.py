@@ -125,10 +125,12 @@ def _gameobject_node(doc: Doc, by_id: Mapping[int, Doc]) -> Node:
     transform = next(
         (c for c in components if c in by_id and by_id[c].class_id in TRANSFORM_CLASSES), None
     )
-    source = F.ref_value(doc, "m_CorrespondingSourceObject") or F.ref_value(
-        doc, "m_PrefabParentObject"
-    )
-    instance = F.ref_value(doc, "m_PrefabInstance") or F.ref_value(doc, "m_PrefabInternal") or 0
+    source = F.ref_value(doc, "m_CorrespondingSourceObject")
+    if source is None:  # before 2018.3
+        source = F.ref_value(doc, "m_PrefabParentObject")
+    instance = 0
+    if source:
+        instance = F.ref_value(doc, "m_PrefabInstance") or F.ref_value(doc, "m_PrefabInternal") or 0
     name = F.scalar_value(doc, "m_Name") or ""
     # an object that comes from a prefab (old-format instance) is not ours to edit
     return Node(doc.file_id, name, transform, (instance or -1) if source else 0)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Collection, Sequence
+from dataclasses import dataclass, field
 
 import yaml
 
@@ -57,10 +58,15 @@ def validate_docs(path: str, prolog: str, docs: Sequence[Doc], changed: Collecti
             found.append(loc.at(doc, None, f"fileID {doc.file_id} is used by more than one object",
                                 hint="every object in a file needs its own fileID"))
         by_id.setdefault(doc.file_id, doc)
-    for doc in docs:
-        found += _dangling(loc, doc, by_id)
-        if not doc.stripped:
-            found += _ownership(loc, doc, by_id)
+    referenced = {int(m) for doc in docs for m in F.LOCAL_REF_RE.findall(doc.text)}
+    # reading every reference once is cheap; finding where a dangling one sits is not, so only
+    # documents are scanned when something is actually missing
+    if referenced - by_id.keys() - {0}:
+        for doc in docs:
+            found += _dangling(loc, doc, by_id)
+    links = _Links.read(docs)
+    found += _gameobjects(loc, links, by_id)
+    found += _transforms(loc, links, by_id)
     found += _scene_roots(loc, docs, by_id)
     for doc in docs:
         if doc.file_id in changed:
@@ -82,39 +88,64 @@ def _dangling(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic
     return out
 
 
-def _ownership(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic]:
+@dataclass(slots=True)
+class _Links:
+    """The references that tie objects together, read once per document."""
+
+    owner: dict[int, int] = field(default_factory=dict)  # component → m_GameObject
+    components: dict[int, list[int]] = field(default_factory=dict)  # GameObject → m_Component
+    father: dict[int, int] = field(default_factory=dict)  # Transform → m_Father
+    children: dict[int, list[int]] = field(default_factory=dict)  # Transform → m_Children
+
+    @classmethod
+    def read(cls, docs: Sequence[Doc]) -> _Links:
+        links = cls()
+        for doc in docs:
+            if doc.stripped:
+                continue
+            if doc.class_id == 1:
+                links.components[doc.file_id] = F.list_refs(doc, "m_Component")
+                continue
+            owner = F.ref_value(doc, "m_GameObject")
+            if owner is not None:
+                links.owner[doc.file_id] = owner
+            if doc.class_id in TRANSFORM_CLASSES:
+                links.father[doc.file_id] = F.ref_value(doc, "m_Father") or 0
+                links.children[doc.file_id] = F.list_refs(doc, "m_Children")
+        return links
+
+
+def _gameobjects(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
     out = []
-    if doc.class_id == 1:
-        components = F.list_refs(doc, "m_Component")
+    for go_id, components in links.components.items():
+        doc = by_id[go_id]
         for ref in components:
-            other = by_id.get(ref)
-            if other is not None and not other.stripped and F.ref_value(other, "m_GameObject") != doc.file_id:
-                out.append(loc.at(doc, "m_Component",
-                                  f"lists {other.header} whose m_GameObject is not this GameObject"))
+            if ref in links.owner and links.owner[ref] != go_id:
+                out.append(loc.at(doc, "m_Component", f"lists {by_id[ref].header}, whose "
+                                  "m_GameObject is not this GameObject"))
         transforms = [c for c in components if c in by_id and by_id[c].class_id in TRANSFORM_CLASSES]
         if len(transforms) != 1 or components[0] != transforms[0]:
             out.append(loc.at(doc, "m_Component", "a GameObject needs exactly one Transform, listed first"))
-        return out
-    owner = F.ref_value(doc, "m_GameObject")
-    if owner:
-        go = by_id.get(owner)
-        if go is not None and go.class_id == 1 and not go.stripped and doc.file_id not in F.list_refs(go, "m_Component"):
-            out.append(loc.at(doc, "m_GameObject", f"points at {go.header}, whose m_Component does not list it"))
-    if doc.class_id in TRANSFORM_CLASSES:
-        out += _family(loc, doc, by_id)
+    for comp_id, go_id in links.owner.items():
+        listed = links.components.get(go_id)
+        if listed is not None and comp_id not in listed:
+            out.append(loc.at(by_id[comp_id], "m_GameObject", f"points at {by_id[go_id].header}, "
+                              "whose m_Component does not list it"))
     return out
 
 
-def _family(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _transforms(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
     out = []
-    father = F.ref_value(doc, "m_Father") or 0
-    parent = by_id.get(father)
-    if parent is not None and not parent.stripped and doc.file_id not in F.list_refs(parent, "m_Children"):
-        out.append(loc.at(doc, "m_Father", f"points at {parent.header}, whose m_Children does not list it"))
-    for child_id in F.list_refs(doc, "m_Children"):
-        child = by_id.get(child_id)
-        if child is not None and not child.stripped and F.ref_value(child, "m_Father") != doc.file_id:
-            out.append(loc.at(doc, "m_Children", f"lists {child.header}, whose m_Father is not this Transform"))
+    for tr_id, father in links.father.items():
+        siblings = links.children.get(father)
+        if siblings is not None and tr_id not in siblings:
+            out.append(loc.at(by_id[tr_id], "m_Father", f"points at {by_id[father].header}, "
+                              "whose m_Children does not list it"))
+    for tr_id, children in links.children.items():
+        for child in children:
+            if child in links.father and links.father[child] != tr_id:
+                out.append(loc.at(by_id[tr_id], "m_Children", f"lists {by_id[child].header}, "
+                                  "whose m_Father is not this Transform"))
     return out
 
 
