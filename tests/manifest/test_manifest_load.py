@@ -10,7 +10,13 @@ import pytest
 
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.interfaces.model import Dialect
-from unityscaffold.manifest import ObjectPath, load_manifest, parse_manifest, starter_manifest
+from unityscaffold.manifest import (
+    Manifest,
+    ObjectPath,
+    load_manifest,
+    parse_manifest,
+    starter_manifest,
+)
 from unityscaffold.manifest.model import (
     Direction,
     Protocol,
@@ -22,7 +28,7 @@ from unityscaffold.manifest.model import (
 VALID = Path(__file__).parent / "valid"
 
 
-def parse(text: str, where: Path = Path("/robots/r1")) -> object:
+def parse(text: str, where: Path = Path("/robots/r1")) -> Manifest:
     return parse_manifest(textwrap.dedent(text), where / "robot.yaml")
 
 
@@ -57,10 +63,12 @@ def test_component_fields_keep_scalars_structs_lists_and_references() -> None:
         ("SubscribedTransform", ObjectPath("Robot/base_link")),
     ]
     assert lidar.script == "Assets/Scripts/Lidar.cs"
-    assert lidar.field("Connector").value == ObjectPath("Ros/Connector", "RosConnector")
-    offset = lidar.field("Offset").value
+    fields = {f.name: f.value for f in lidar.fields}
+    assert fields["Connector"] == ObjectPath("Ros/Connector", "RosConnector")
+    offset = fields["Offset"]
     assert isinstance(offset, StructValue) and offset.as_dict() == {"x": 0, "y": 0.25, "z": -1.5}
-    assert lidar.field("Names").value == ("a", "b", "@literal")
+    assert fields["Names"] == ("a", "b", "@literal")
+    assert lidar.field("Names") is not None and lidar.field("Missing") is None
 
 
 def test_ros2_sample_gets_every_default() -> None:
@@ -107,7 +115,7 @@ def test_entries_use_create_gameobjects_unless_they_say_otherwise() -> None:
           - {name: a, type: p/A, direction: publish}
           - {name: b, type: p/B, direction: publish, create: true}
         """)
-    assert [t.create for t in m.topics] == [False, True]  # type: ignore[attr-defined]
+    assert [t.create for t in m.topics] == [False, True]
 
 
 def test_scene_may_be_left_out_when_every_entry_names_one() -> None:
@@ -117,8 +125,8 @@ def test_scene_may_be_left_out_when_every_entry_names_one() -> None:
         connector: {scene: Assets/A.unity}
         topics: [{name: a, type: p/A, direction: publish, scene: Assets/B.unity}]
         """)
-    assert m.scene is None  # type: ignore[attr-defined]
-    assert m.topics[0].scene == "Assets/B.unity"  # type: ignore[attr-defined]
+    assert m.scene is None
+    assert m.topics[0].scene == "Assets/B.unity"
 
 
 def test_paths_are_normalised_inside_the_project() -> None:
@@ -129,9 +137,9 @@ def test_paths_are_normalised_inside_the_project() -> None:
         output: ./Assets/../Assets/Gen/
         scene: Assets/Scenes/./Main.unity
         """)
-    assert m.project_root == Path("/robots/r1/unity")  # type: ignore[attr-defined]
-    assert m.output == "Assets/Gen"  # type: ignore[attr-defined]
-    assert m.scene == "Assets/Scenes/Main.unity"  # type: ignore[attr-defined]
+    assert m.project_root == Path("/robots/r1/unity")
+    assert m.output == "Assets/Gen"
+    assert m.scene == "Assets/Scenes/Main.unity"
 
 
 def test_yaml_anchors_and_merge_keys_are_expanded() -> None:
@@ -143,7 +151,7 @@ def test_yaml_anchors_and_merge_keys_are_expanded() -> None:
           - &sub {name: /a, type: p/A, direction: subscribe, throttle: 50}
           - {<<: *sub, name: /b}
         """)
-    assert [(t.name, t.throttle) for t in m.topics] == [  # type: ignore[attr-defined]
+    assert [(t.name, t.throttle) for t in m.topics] == [
         ("/a", 50), ("/b", 50)]
 
 
@@ -156,7 +164,7 @@ def test_empty_lists_and_connector_are_accepted() -> None:
         topics:
         services: []
         """)
-    assert m.topics == () and m.connector.gameobject == "RosConnector"  # type: ignore[attr-defined]
+    assert m.topics == () and m.connector.gameobject == "RosConnector"
 
 
 def test_yes_and_dates_stay_text_in_yaml_1_2() -> None:
@@ -169,7 +177,7 @@ def test_yes_and_dates_stay_text_in_yaml_1_2() -> None:
             gameobject: A
             fields: {Mode: yes, Day: 2024-01-01, Hex: 0x10}
         """)
-    assert [f.value for f in m.components[0].fields] == ["yes", "2024-01-01", 16]  # type: ignore[attr-defined]
+    assert [f.value for f in m.components[0].fields] == ["yes", "2024-01-01", 16]
 
 
 @pytest.mark.parametrize("ros", [1, 2])

@@ -6,7 +6,6 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._fields import read_fields
 from unityscaffold.manifest._paths import project_path
@@ -23,8 +22,8 @@ from unityscaffold.manifest.model import (
     is_csharp_identifier,
 )
 
-__all__ = ["Context", "read_component", "read_gameobject", "read_scene", "read_service",
-           "read_topic", "locations"]
+__all__ = ["Context", "locations", "read_component", "read_gameobject", "read_scene",
+           "read_service", "read_topic"]
 
 EXPECT_NAME = "a ROS name such as /cmd_vel: letters, digits, '_' and '/'"
 EXPECT_GAMEOBJECT = "a hierarchy path such as Robot/base_link"
@@ -206,6 +205,3 @@ def _script(r: Reader, m: YMap, ctx: Context) -> str | None:
         return None
     return value
 
-
-def first_line(location: SourceLocation) -> str:
-    return f"line {location.line}" if location.line else "above"

@@ -35,6 +35,7 @@ SCENE = "[.]unity$"
 URL = "^wss?://[^\\s/]+(/\\S*)?$"
 
 NO_DEFAULT = object()
+DEFAULT_TIMEOUT = 10
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,7 +144,7 @@ CONNECTOR = Section("connector", "connector", "ROS#'s RosConnector component.", 
     Key("url", "rosbridge WebSocket URL (`RosBridgeServerUrl`).",
         {"type": "string", "pattern": URL}, default="ws://localhost:9090"),
     Key("timeout", "Connection timeout in seconds (`SecondsTimeout`).",
-        {"type": "integer", "minimum": 1}, default=10),
+        {"type": "integer", "minimum": 1}, default=DEFAULT_TIMEOUT),
     Key("serializer", "JSON serializer (`Serializer`): `microsoft` is System.Text.Json.",
         {"enum": [s.key for s in Serializer]}, default=Serializer.MICROSOFT.key),
     Key("protocol", "WebSocket implementation (`protocol`).",

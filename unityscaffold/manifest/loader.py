@@ -27,12 +27,10 @@ from unityscaffold.manifest.model import (
     Manifest,
     Protocol,
     Serializer,
+    is_csharp_identifier,
 )
 
 __all__ = ["load_manifest", "parse_manifest"]
-
-_DEFAULT_TIMEOUT = spec.CONNECTOR.key("timeout").default
-assert isinstance(_DEFAULT_TIMEOUT, int)
 
 
 def load_manifest(path: Path) -> Manifest:
@@ -156,7 +154,13 @@ def _top_scene(r: Reader, top: YMap, project_root: Path) -> str | None:
 
 
 def _namespace(r: Reader, top: YMap) -> str | None:
-    return r.text(top, "namespace", "a C# namespace such as MyRobot.Ros", spec.NAMESPACE)
+    value = r.text(top, "namespace", "a C# namespace such as MyRobot.Ros", spec.NAMESPACE)
+    keywords = [p for p in (value or "").split(".") if p and not is_csharp_identifier(p)]
+    if keywords:
+        r.invalid(top.get("namespace"), "a C# namespace such as MyRobot.Ros",  # type: ignore[arg-type]
+                  hint=f"'{keywords[0]}' is a C# keyword")
+        return None
+    return value
 
 
 def _interfaces(r: Reader, top: YMap, base: Path) -> tuple[Path, ...]:
@@ -191,7 +195,7 @@ def _connector(r: Reader, top: YMap, project_root: Path, scene: str | None) -> C
         url=r.text(m, "url", "a rosbridge URL such as ws://localhost:9090", spec.URL,
                    hint="rosbridge listens on ws:// (or wss://) host:port")
         or str(defaults["url"]),
-        timeout=r.integer(m, "timeout", 1, "seconds") or _DEFAULT_TIMEOUT,
+        timeout=r.integer(m, "timeout", 1, "seconds") or spec.DEFAULT_TIMEOUT,
         serializer=next(s for s in Serializer if s.key == (serializer or defaults["serializer"])),
         protocol=next(p for p in Protocol if p.key == (protocol or defaults["protocol"])),
         locations=locations(m),

@@ -11,7 +11,6 @@ import enum
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Union
 
 from unityscaffold.errors import SourceLocation
 from unityscaffold.interfaces.model import Dialect
@@ -129,7 +128,7 @@ class StructValue:
         return dict(self.items)
 
 
-FieldValue = Union[bool, int, float, str, ObjectPath, StructValue, tuple["FieldValue", ...]]
+FieldValue = bool | int | float | str | ObjectPath | StructValue | tuple["FieldValue", ...]
 
 
 @dataclass(frozen=True, slots=True)
@@ -246,19 +245,21 @@ class Manifest:
     def scenes(self) -> tuple[str, ...]:
         """Every scene the manifest touches, sorted."""
         named = {self.connector.scene}
-        for item in (*self.topics, *self.services, *self.components):
-            named.add(item.scene)
+        named.update(t.scene for t in self.topics)
+        named.update(s.scene for s in self.services)
+        named.update(c.scene for c in self.components)
         return tuple(sorted(named))
 
 
-_CSHARP_KEYWORDS = frozenset(
-    """abstract as base bool break byte case catch char checked class const continue decimal
-    default delegate do double else enum event explicit extern false finally fixed float for
-    foreach goto if implicit in int interface internal is lock long namespace new null object
-    operator out override params private protected public readonly ref return sbyte sealed short
-    sizeof stackalloc static string struct switch this throw true try typeof uint ulong unchecked
-    unsafe ushort using virtual void volatile while""".split()
-)
+# The reserved C# keywords (codegen.naming keeps the same list plus the contextual ones, which
+# are legal class names); a class named after one would not compile.
+_CSHARP_KEYWORDS = frozenset((  # noqa: SIM905
+    "abstract as base bool break byte case catch char checked class const continue decimal "
+    "default delegate do double else enum event explicit extern false finally fixed float for "
+    "foreach goto if implicit in int interface internal is lock long namespace new null object "
+    "operator out override params private protected public readonly ref return sbyte sealed "
+    "short sizeof stackalloc static string struct switch this throw true try typeof uint ulong "
+    "unchecked unsafe ushort using virtual void volatile while").split(" "))
 CSHARP_IDENTIFIER = r"[A-Za-z_][A-Za-z0-9_]*"
 _IDENTIFIER_RE = re.compile(CSHARP_IDENTIFIER)
 _SUFFIX: dict[Direction | Role, str] = {
