@@ -36,6 +36,12 @@ def _indent(text: str, prefix: str = "    ") -> str:
 @app.command("list")
 def list_types(
     package: str | None = typer.Option(None, "--package", "-p", help="Only this package."),
+    live: str | None = typer.Option(
+        None, "--live", metavar="URL",
+        help="List the types of the active topics of a running system instead: a ROS 1 master "
+        "(http://HOST:11311) or a rosbridge (ws://HOST:9090).",
+    ),
+    timeout: float = typer.Option(5.0, "--timeout", help="Seconds to wait for --live answers."),
     ros: int | None = RosOption,
     path: list[Path] = PathOption,
     no_env: bool = NoEnvOption,
@@ -46,6 +52,9 @@ def list_types(
     A malformed file is reported (file:line:col) without hiding the good types; the exit
     status is then 2.
     """
+    if live is not None:
+        _list_live(live, timeout, as_json)
+        return
     registry = Registry.load(dialect_of(ros), path, use_environment=not no_env)
     files = [f for f in registry.files() if package is None or f.package == package]
     if package is not None and not files:
@@ -76,6 +85,18 @@ def list_types(
         typer.echo(problem, err=True)
     if problems:
         raise typer.Exit(int(Exit.USER_ERROR))
+
+
+def _list_live(url: str, timeout: float, as_json: bool) -> None:
+    from unityscaffold.interfaces.live import list_live_types
+
+    topics = list_live_types(url, timeout=timeout)
+    if as_json:
+        _print_json([{"topic": topic, "type": type_name} for topic, type_name in topics])
+        return
+    width = max((len(topic) for topic, _ in topics), default=0)
+    for topic, type_name in topics:
+        typer.echo(f"{topic:<{width}}  {type_name}")
 
 
 def _show_text(describer: Describer, data: dict[str, Any], registry: Registry) -> None:
