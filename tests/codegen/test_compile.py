@@ -28,7 +28,8 @@ def test_all_jazzy_interfaces_compile_with_ros2_define(
     assert not generation.skipped
 
 
-def _custom(mcs: str, tmp: Path, dialect: Dialect, runtime: Compiled, **options: object) -> Compiled:
+def _custom(mcs: str, tmp: Path, dialect: Dialect, runtime: Compiled,
+            **options: object) -> Compiled:
     names = ["scaffold_test_msgs/Kitchen", "scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"]
     generation = generate_data(dialect, names, **options)
     assert all(f.path.startswith("ScaffoldTest/") for f in generation.files)

@@ -44,7 +44,8 @@ def test_actions_get_rossharps_seven_classes(ros1: Generation, ros2: Generation)
 def test_ros1_and_ros2_action_wrappers_use_their_bases(ros1: Generation, ros2: Generation) -> None:
     assert ("CookActionGoal(Header header, GoalID goal_id, CookGoal goal) : base(header, goal_id)"
             in _text(ros1, "ScaffoldTest/action/CookActionGoal.cs"))
-    assert ("(Header header, string action, string id, CookFeedback values) : base(header, action, id)"
+    assert ("(Header header, string action, string id, CookFeedback values)"
+            " : base(header, action, id)"
             in _text(ros2, "ScaffoldTest/action/CookActionFeedback.cs"))
 
 

@@ -9,6 +9,7 @@ a failure leaves no half-written output; a file whose bytes are unchanged is nev
 
 from __future__ import annotations
 
+import contextlib
 import enum
 import os
 import tempfile
@@ -136,10 +137,8 @@ def write_files(changes: Sequence[FileChange]) -> list[Path]:
         for temp, _ in temps:
             temp.unlink(missing_ok=True)
         for folder in reversed(created):
-            try:
+            with contextlib.suppress(OSError):
                 folder.rmdir()
-            except OSError:
-                pass
         if isinstance(exc, OSError):
             raise UserError(f"cannot write {exc.filename or 'output'}: {exc.strerror}") from None
         raise

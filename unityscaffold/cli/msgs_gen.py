@@ -11,7 +11,7 @@ import typer
 from unityscaffold.apply.files import Action, FileChange, plan_files, write_files
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
-from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 
@@ -25,7 +25,7 @@ def _package_interfaces(registry: Registry, package: str) -> list[Interface]:
         hint = f"did you mean {' or '.join(close)}?" if close else "give pkg/Type or a package name"
         raise UserError(f"unknown type or package '{package}'", hint=hint)
     found: list[Interface] = []
-    problems = []
+    problems: list[Diagnostic] = []
     for file in files:
         try:
             found.append(registry.parse(file))

@@ -45,10 +45,12 @@ class ActionClasses:
 
 
 # role -> (base, payload member, runtime parameters (type key or C# type, name)) per dialect
-_WRAPPERS = {
+_Wrapper = tuple[str, str, tuple[tuple[str, str], ...]]
+_WRAPPERS: dict[Dialect, dict[str, _Wrapper]] = {
     Dialect.ROS1: {
         "action_goal": ("ActionGoal", "goal", (("header", "header"), ("goal_id", "goal_id"))),
-        "action_result": ("ActionResult", "result", (("header", "header"), ("goal_status", "status"))),
+        "action_result": ("ActionResult", "result",
+                          (("header", "header"), ("goal_status", "status"))),
         "action_feedback": ("ActionFeedback", "feedback",
                             (("header", "header"), ("goal_status", "status"))),
     },
@@ -73,7 +75,8 @@ def build_wrapper(ctx: FileContext, classes: ActionClasses, role: str, runtime: 
     cls: CsClass = getattr(classes, role)
     payload_cls: CsClass = getattr(classes, _PAYLOAD_ROLE[role])
     base, payload, params = _WRAPPERS[ctx.dialect][role]
-    runtime_classes = {key: getattr(runtime, key) for key, _ in params if hasattr(runtime, key)}
+    runtime_classes: dict[str, CsClass] = {key: getattr(runtime, key) for key, _ in params
+                                           if hasattr(runtime, key)}
     wanted = [(payload_cls, False), *((c, ctx.qualify_runtime) for c in runtime_classes.values())]
     refs = References(cls.namespace, ctx.known, wanted)
     typed = [(refs.name(runtime_classes[key], qualified=ctx.qualify_runtime)
@@ -101,7 +104,7 @@ def build_action(ctx: FileContext, classes: ActionClasses, ros_name: str, source
              classes.goal, classes.result, classes.feedback)
     refs = References(cls.namespace, ctx.known, [(c, False) for c in order])
     names = [refs.name(c) for c in order]
-    parts = tuple(zip(names[:3], ("action_goal", "action_result", "action_feedback")))
+    parts = tuple(zip(names[:3], ("action_goal", "action_result", "action_feedback"), strict=False))
     return ActionView(
         header=FileHeader(source, identity, ctx.define, cls.namespace, refs.usings),
         class_name=cls.name,

@@ -45,7 +45,8 @@ def _where(spec: MessageSpec, field: Field | None = None) -> SourceLocation:
     return SourceLocation(spec.source or spec.full_name)
 
 
-def _element_class(ctx: FileContext, ref: TypeRef, spec: MessageSpec, field: Field) -> CsClass | None:
+def _element_class(ctx: FileContext, ref: TypeRef, spec: MessageSpec,
+                   field: Field) -> CsClass | None:
     if ref.is_message:
         return ctx.class_of(ref.base, _where(spec, field))
     if ctx.dialect is Dialect.ROS1 and ref.base in ROS1_TIME_TYPES:
@@ -100,7 +101,8 @@ def _member(ctx: FileContext, refs: References, spec: MessageSpec, field: Field)
     try:
         init = _initial(ref, element, primitive, field.default)
     except ValueError as exc:
-        raise LocatedError.at(_where(spec, field), f"default value of '{field.name}': {exc}") from None
+        message = f"default value of '{field.name}': {exc}"
+        raise LocatedError.at(_where(spec, field), message) from None
     return MemberView(name, cs_type, init, doc_lines(field.comment), _check(ref, name, field.name))
 
 
@@ -114,12 +116,14 @@ def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> Consta
         value = literals.literal(constant.value, cs_type)
     except ValueError as exc:
         raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
-    return ConstantView(escape_identifier(constant.name), cs_type, value, doc_lines(constant.comment))
+    name = escape_identifier(constant.name)
+    return ConstantView(name, cs_type, value, doc_lines(constant.comment))
 
 
 def _check_names(spec: MessageSpec, class_name: str) -> None:
-    seen: dict[str, str] = {"RosMessageName": "the RosMessageName constant", class_name: "the class"}
-    for item in (*spec.constants, *spec.fields):
+    seen = {"RosMessageName": "the RosMessageName constant", class_name: "the class"}
+    items: list[Constant | Field] = [*spec.constants, *spec.fields]
+    for item in items:
         where = item.location or _where(spec)
         try:
             escape_identifier(item.name)

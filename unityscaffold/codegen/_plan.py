@@ -235,7 +235,7 @@ def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
     items = []
     for role in _ACTION_ROLES:
         suffix = _ROLE_SUFFIX[role]
-        identity: Interface = parts.get(role) or (derived.get(suffix, unit)
+        identity: Interface = parts.get(role) or (derived.get(suffix) or unit
                                                   if unit.dialect is Dialect.ROS1 else unit)
         items.append(planned(role, parts.get(role), base + suffix, f"{prefix}{unit.name}{suffix}",
                              "action", identity))
@@ -263,7 +263,8 @@ def _check_unique(items: list[PlannedClass]) -> None:
     for item in items:
         other = seen.setdefault(item.cs_class, item)
         if other is not item:
-            raise UserError(f"{other.interface.full_name} and {item.interface.full_name} would both "
+            both = f"{other.interface.full_name} and {item.interface.full_name}"
+            raise UserError(f"{both} would both "
                             f"become C# class {item.cs_class.full_name}",
                             hint="ROS# names classes by package namespace and type name; rename "
                             "one type, or generate them separately with --namespace")

@@ -6,16 +6,15 @@ closure, decides for every class whether ROS# already ships it, and renders the 
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass, field
-from pathlib import PurePosixPath
 
 from unityscaffold.codegen import _plan
-from unityscaffold.codegen._actions import ActionClasses, build_action, build_wrapper
+from unityscaffold.codegen._actions import build_action, build_wrapper
 from unityscaffold.codegen._build import FileContext, build_message
 from unityscaffold.codegen._identity import Identities
 from unityscaffold.codegen._names import CsClass
-from unityscaffold.codegen._plan import PlannedClass, Plan
+from unityscaffold.codegen._plan import Plan, PlannedClass
 from unityscaffold.codegen._templates import environment
 from unityscaffold.codegen.views import View
 from unityscaffold.interfaces.model import Dialect, Interface
@@ -63,10 +62,12 @@ class SkippedClass:
 class Generation:
     """What one run produces, and which C# class each ROS type maps to.
 
-    ``classes`` maps each interface full name (``pkg/Name``, ``pkg/msg/Name``, ``pkg/srv/Name``,
-    ``pkg/action/Name``; also ROS 1 service halves and action messages, ``pkg/NameRequest``…) to
-    its classes by role: ``message``; ``request``/``response``; ``goal``, ``result``,
-    ``feedback``, ``action_goal``, ``action_result``, ``action_feedback``, ``action``.
+    ``classes`` maps ``pkg/msg/Name``, ``pkg/srv/Name`` and ``pkg/action/Name`` (both ROS
+    versions) to the classes by role: ``message``; ``request``/``response``; ``goal``,
+    ``result``, ``feedback``, ``action_goal``, ``action_result``, ``action_feedback``,
+    ``action``. Every message full name as field types spell it (ROS 1 ``pkg/Name``,
+    ``pkg/NameRequest``; ROS 2 ``pkg/srv/Name_Request``…) maps to ``{"message": class}`` too,
+    shipped and skipped types included.
     """
 
     files: tuple[GeneratedFile, ...]
@@ -90,7 +91,8 @@ def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> 
                              ids.label(item.identity_of))
     classes = plan.action_classes(item.interface)
     if item.role == "action":
-        return build_action(ctx, classes, item.ros_message_name, source, ids.label(item.identity_of))
+        identity = ids.label(item.identity_of)
+        return build_action(ctx, classes, item.ros_message_name, source, identity)
     return build_wrapper(ctx, classes, item.role, plan.runtime, item.ros_message_name, source,
                          ids.label(item.identity_of))
 
@@ -111,6 +113,3 @@ def generate(registry: Registry, roots: Iterable[Interface], options: Options) -
     return Generation(tuple(sorted(files, key=lambda f: f.path)),
                       tuple(sorted(skipped, key=lambda s: s.path)), plan.class_map())
 
-
-def relative_paths(generation: Generation) -> Sequence[PurePosixPath]:
-    return [PurePosixPath(f.path) for f in generation.files]
