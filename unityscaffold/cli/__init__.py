@@ -7,7 +7,7 @@ import sys
 import typer
 
 from unityscaffold import __version__
-from unityscaffold.cli import discover, msgs, scene
+from unityscaffold.cli import apply, discover, msgs, scene
 from unityscaffold.errors import Exit, ScaffoldError
 
 __all__ = ["app", "main"]
@@ -21,6 +21,7 @@ app = typer.Typer(
 )
 app.add_typer(msgs.app, name="msgs")
 app.add_typer(scene.app, name="scene")
+apply.register(app)
 discover.register(app)
 
 

@@ -1,0 +1,137 @@
+"""The code half of a plan: message classes, per-topic scripts, and their ``.meta`` files.
+
+Layout under the manifest's ``output`` folder: ``Messages/<Pkg>/<msg|srv|action>/<Class>.cs``
+(the C# generator's layout) and ``Scripts/<Class>.cs`` with the user's half beside it as
+``Scripts/<Class>.User.cs`` (created once, never rewritten).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.apply.files import DesiredFile
+from unityscaffold.codegen import Generation, Options, generate
+from unityscaffold.codegen.layout import output_files
+from unityscaffold.codegen.scripts import (
+    PublisherScript,
+    ServiceClientScript,
+    ServiceServerScript,
+    SubscriberScript,
+    render_script,
+)
+from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
+from unityscaffold.interfaces.registry import Registry
+from unityscaffold.manifest.model import Direction, Manifest, Role, Service, Topic
+from unityscaffold.unity.meta import folder_meta, meta_guid, monoscript_meta
+
+__all__ = ["CodePlan", "PlannedScript", "plan_code"]
+
+Script = PublisherScript | SubscriberScript | ServiceClientScript | ServiceServerScript
+
+
+@dataclass(frozen=True, slots=True)
+class PlannedScript:
+    """One generated MonoBehaviour and where the manifest wants it attached."""
+
+    source: str  # "topic /odom", "service /reset"
+    view: Script
+    path: Path
+    user_path: Path
+    guid: str
+    item: Topic | Service
+
+
+@dataclass(frozen=True, slots=True)
+class CodePlan:
+    generated: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
+    created_once: tuple[DesiredFile, ...]  # user halves and .meta files: written only if missing
+    scripts: tuple[PlannedScript, ...]
+    generation: Generation
+
+
+def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSpec | ServiceSpec:
+    where = item.locations.of("type")
+    try:
+        found = registry.get(item.type)
+    except LocatedError:
+        raise
+    except UserError as error:
+        raise LocatedError.at(where, error.message, hint=error.hint) from None
+    if not isinstance(found, kind):
+        wanted = "a message" if kind is MessageSpec else "a service"
+        raise LocatedError.at(where, f"'{item.type}' is a {found.kind.value}, not {wanted}",
+                              expected=f"{wanted} type such as "
+                              + ("geometry_msgs/Twist" if kind is MessageSpec else "std_srvs/Trigger"))
+    return found
+
+
+def _view(manifest: Manifest, item: Topic | Service, spec: MessageSpec | ServiceSpec,
+          generation: Generation) -> Script:
+    common = {"class_name": item.class_name, "ros_type": spec.full_name,
+              "manifest": manifest.path.name}
+    if isinstance(item, Topic):
+        message = generation.classes[spec.full_name]["message"].qualified
+        if item.direction is Direction.PUBLISH:
+            return PublisherScript(**common, topic=item.name, message_type=message,
+                                   rate=item.rate or 0.0)
+        return SubscriberScript(**common, topic=item.name, message_type=message,
+                                throttle=item.throttle or 0, queue=item.queue or 1)
+    classes = generation.classes[spec.full_name]
+    kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
+    return kind(**common, service=item.name, request_type=classes["request"].qualified,
+                response_type=classes["response"].qualified)
+
+
+def _asset(manifest: Manifest, path: Path) -> str:
+    return path.relative_to(manifest.project_root).as_posix()
+
+
+def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[DesiredFile]:
+    assets = manifest.project_root / "Assets"
+    metas = []
+    for folder in sorted(folders):
+        if folder == assets or assets not in folder.parents:
+            continue
+        meta = folder.with_name(folder.name + ".meta")
+        guid = meta_guid(meta, salt, _asset(manifest, folder))
+        metas.append(DesiredFile(meta, folder_meta(guid).encode(), create_only=True))
+    return metas
+
+
+def plan_code(manifest: Manifest, registry: Registry, salt: str) -> CodePlan:
+    """Everything the manifest's topics and services need in C#, as desired files."""
+    items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
+    items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
+    items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
+    generation = generate(registry, [spec for _, spec in items],
+                          Options(manifest.ros, manifest.include_shipped, manifest.namespace))
+    messages_dir = manifest.output_dir / "Messages"
+    scripts_dir = manifest.output_dir / "Scripts"
+    generated, created_once = [], []
+    for file in output_files(generation, messages_dir):
+        (created_once if file.create_only else generated).append(file)
+    scripts = []
+    for item, spec in items:
+        view = _view(manifest, item, spec, generation)
+        rendered = render_script(view)
+        path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
+        guid = meta_guid(path.with_name(path.name + ".meta"), salt, _asset(manifest, path))
+        user_guid = meta_guid(user_path.with_name(user_path.name + ".meta"), salt,
+                              _asset(manifest, user_path))
+        generated.append(DesiredFile(path, rendered.plumbing.encode()))
+        created_once += [
+            DesiredFile(user_path, rendered.user.encode(), create_only=True),
+            DesiredFile(path.with_name(path.name + ".meta"), monoscript_meta(guid).encode(), True),
+            DesiredFile(user_path.with_name(user_path.name + ".meta"),
+                        monoscript_meta(user_guid).encode(), True),
+        ]
+        kind = "topic" if isinstance(item, Topic) else "service"
+        scripts.append(PlannedScript(f"{kind} {item.name}", view, path, user_path, guid, item))
+    # Every folder that will hold a planned file needs a folder .meta (the generator's own
+    # covers Messages/ and below; these are the ones above it and Scripts/).
+    folders = {parent for d in (*generated, *created_once) for parent in d.path.parents
+               if messages_dir not in parent.parents and parent != messages_dir}
+    created_once += _folder_metas(manifest, folders, salt)
+    return CodePlan(tuple(generated), tuple(created_once), tuple(scripts), generation)

@@ -1,0 +1,61 @@
+"""``scaffold init``: a new Unity project that ``scaffold apply`` can work on at once.
+
+The files come from ``templates/unity_project/`` (``*.jinja`` ones rendered); the starter
+manifest from ``manifest.starter_manifest``. The project's ``productGUID`` (which also salts
+the GUIDs of generated ``.meta`` files) is derived from the project's folder name, so the same
+command gives the same files.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
+from unityscaffold.apply.files import DesiredFile, FileChange, plan_files, write_files
+from unityscaffold.apply.rossharp import DEFAULT_VERSION
+from unityscaffold.codegen._templates import environment, templates_dir
+from unityscaffold.errors import UserError
+from unityscaffold.manifest import starter_manifest
+
+__all__ = ["MAIN_SCENE", "init_project"]
+
+MAIN_SCENE = "Assets/Scenes/Main.unity"
+_TEMPLATE_ROOT = "unity_project"
+_RENAMES = {"gitignore": ".gitignore"}
+
+
+def _template_files(context: dict[str, str]) -> list[tuple[str, bytes]]:
+    root = templates_dir() / _TEMPLATE_ROOT
+    files = []
+    for source in sorted(p for p in root.rglob("*") if p.is_file() and p.name != "README.md"):
+        relative = source.relative_to(root).as_posix()
+        relative = _RENAMES.get(relative, relative)
+        if relative.endswith(".jinja"):
+            text = environment().get_template(f"{_TEMPLATE_ROOT}/{source.relative_to(root).as_posix()}")
+            files.append((relative[: -len(".jinja")], text.render(**context).encode("utf-8")))
+        else:
+            files.append((relative, source.read_bytes()))
+    return files
+
+
+def init_project(directory: Path, ros: int, *, force: bool = False) -> list[FileChange]:
+    """Write a template Unity project into ``directory``; refuses a non-empty folder."""
+    if directory.exists() and not directory.is_dir():
+        raise UserError(f"{directory} exists and is not a folder")
+    if directory.is_dir() and any(directory.iterdir()) and not force:
+        raise UserError(f"{directory} is not empty",
+                        hint="choose a new folder, or pass --force to add the template's files "
+                        "(existing files are kept)")
+    name = directory.resolve().name
+    context = {
+        "product_name": name,
+        "product_guid": hashlib.md5(f"unityscaffold-init:{name}".encode()).hexdigest(),
+        "rossharp_version": DEFAULT_VERSION,
+    }
+    desired = [DesiredFile(directory / rel, data, create_only=True)
+               for rel, data in _template_files(context)]
+    manifest = starter_manifest(ros, MAIN_SCENE, schema=None)
+    desired.append(DesiredFile(directory / "robot.yaml", manifest.encode("utf-8"), create_only=True))
+    changes = plan_files(desired)
+    write_files(changes)
+    return changes

@@ -1,0 +1,139 @@
+"""A whole plan: what ``apply`` would write, update and delete to make the project match.
+
+Pure: reads the manifest, the interfaces, the Unity project and the lock, and returns file
+changes and scene edits; nothing is written here (see ``apply.run``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from unityscaffold.apply.code import CodePlan, plan_code
+from unityscaffold.apply.files import DesiredFile, FileChange, plan_files
+from unityscaffold.apply.lock import LockFile, lock_path, sha256
+from unityscaffold.apply.rossharp import RosSharp
+from unityscaffold.apply.scenes import ScenePlan, plan_scenes
+from unityscaffold.apply.settings import with_ros_define
+from unityscaffold.errors import UserError
+from unityscaffold.interfaces.model import Dialect
+from unityscaffold.interfaces.registry import Registry
+from unityscaffold.manifest.model import Manifest
+from unityscaffold.unity.project import project_salt, script_index
+
+__all__ = ["Plan", "make_plan"]
+
+_SETTINGS = Path("ProjectSettings") / "ProjectSettings.asset"
+
+
+@dataclass(slots=True)
+class Plan:
+    manifest: Manifest
+    changes: list[FileChange]
+    deletions: list[Path]
+    scenes: list[ScenePlan]
+    conflicts: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    skipped_types: int = 0
+
+    @property
+    def writes(self) -> list[FileChange]:
+        return [c for c in self.changes if c.writes]
+
+    @property
+    def in_sync(self) -> bool:
+        return not self.writes and not self.deletions
+
+    def relative(self, path: Path) -> str:
+        try:
+            return path.relative_to(self.manifest.project_root).as_posix()
+        except ValueError:
+            return str(path)
+
+
+def _settings_change(manifest: Manifest) -> list[DesiredFile]:
+    path = manifest.project_root / _SETTINGS
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return []
+    wanted = with_ros_define(text, manifest.ros is Dialect.ROS2)
+    return [DesiredFile(path, wanted.encode("utf-8"))] if wanted != text else []
+
+
+def _relative(manifest: Manifest, path: Path) -> str:
+    return path.relative_to(manifest.project_root).as_posix()
+
+
+def _conflicts(manifest: Manifest, generated: list[DesiredFile], lock: LockFile) -> list[str]:
+    """Generated files someone edited by hand since apply last wrote them."""
+    found = []
+    for want in generated:
+        try:
+            current = want.path.read_bytes()
+        except FileNotFoundError:
+            continue
+        if current == want.content:
+            continue
+        recorded = lock.files.get(_relative(manifest, want.path))
+        if recorded != sha256(current):
+            found.append(_relative(manifest, want.path))
+    return found
+
+
+def _prunable(manifest: Manifest, lock: LockFile, wanted: set[str], created: set[str],
+              notes: list[str]) -> list[Path]:
+    """Files an earlier apply made that the manifest no longer needs (hand-edited ones stay)."""
+    gone = []
+    for relative, digest in sorted({**lock.files, **lock.user_files}.items()):
+        if relative in wanted or relative in created:
+            continue
+        path = manifest.project_root / relative
+        try:
+            current = path.read_bytes()
+        except FileNotFoundError:
+            continue
+        if sha256(current) != digest:
+            notes.append(f"kept {relative}: edited since apply made it; delete it yourself if unused")
+            continue
+        gone.append(path)
+        meta = path.with_name(path.name + ".meta")
+        if meta.exists():
+            gone.append(meta)
+    return gone
+
+
+def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) -> Plan:
+    """Compute everything ``apply`` would do; raises ``UserError`` for bad input."""
+    project = manifest.project_root
+    if not (project / "Assets").is_dir():
+        raise UserError(f"{project} is not a Unity project (no Assets/ folder)",
+                        hint="set `project:` in the manifest, or create one with scaffold init")
+    lock = LockFile.read(lock_path(manifest.path))
+    salt = project_salt(project)
+    code: CodePlan = plan_code(manifest, registry, salt)
+    scripts = script_index(project)
+    scenes = plan_scenes(manifest, code, RosSharp.of(project, scripts), scripts, lock)
+
+    generated = list(code.generated)
+    conflicts = [] if force else _conflicts(manifest, generated, lock)
+    desired = generated + list(code.created_once) + _settings_change(manifest)
+    desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
+
+    # A user half is recorded with the digest of what apply creates, so pruning can tell an
+    # untouched one (removed with its script) from one the user wrote code in (kept).
+    created = {d.path: d.content for d in code.created_once}
+    user_digests = {_relative(manifest, s.user_path): sha256(created[s.user_path])
+                    for s in code.scripts}
+    notes: list[str] = []
+    wanted = {_relative(manifest, d.path) for d in desired}
+    deletions = _prunable(manifest, lock, wanted, set(user_digests), notes)
+    new_lock = LockFile(
+        files={_relative(manifest, d.path): sha256(d.content) for d in generated},
+        user_files=user_digests,
+        components=tuple(sorted({c for s in scenes for c in s.components})),
+    )
+    desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
+    changes = plan_files(desired)
+    return Plan(manifest, changes, deletions, scenes, conflicts, notes,
+                skipped_types=len(code.generation.skipped))

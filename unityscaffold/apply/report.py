@@ -1,0 +1,70 @@
+"""Words for a plan: the summary, the unified diff, and the JSON form for scripts."""
+
+from __future__ import annotations
+
+import difflib
+from typing import Any
+
+from unityscaffold.apply.files import Action
+from unityscaffold.apply.plan import Plan
+
+__all__ = ["plan_diff", "plan_json", "plan_summary"]
+
+
+def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
+    counts = {action: 0 for action in Action}
+    for change in plan.changes:
+        counts[change.action] += 1
+    m = plan.manifest
+    lines = [
+        f"{m.path.name}: Unity project {m.project_root} (ROS {int(m.ros)})",
+        f"files: {counts[Action.CREATE]} to create, {counts[Action.UPDATE]} to update, "
+        f"{len(plan.deletions)} to remove, {counts[Action.UNCHANGED] + counts[Action.SKIP]} unchanged",
+    ]
+    if verbose:
+        for change in plan.changes:
+            if change.writes:
+                lines.append(f"  {change.action.value:<7} {plan.relative(change.path)}")
+        lines += [f"  remove  {plan.relative(path)}" for path in plan.deletions]
+    for scene in plan.scenes:
+        if scene.actions:
+            lines.append(f"scene {scene.relative}:")
+            lines += [f"  {action}" for action in scene.actions]
+    lines += [f"note: {note}" for note in plan.notes]
+    lines += [f"edited by hand (apply will stop; --force overwrites): {c}" for c in plan.conflicts]
+    if plan.in_sync and not plan.conflicts:
+        lines.append("the project matches the manifest")
+    return "\n".join(lines)
+
+
+def _text(data: bytes) -> list[str]:
+    return data.decode("utf-8", errors="replace").splitlines(keepends=True)
+
+
+def plan_diff(plan: Plan) -> str:
+    """Unified diffs of updated and removed files (new files are listed in the summary)."""
+    parts: list[str] = []
+    for change in plan.changes:
+        if change.action is not Action.UPDATE:
+            continue
+        name = plan.relative(change.path)
+        before = _text(change.path.read_bytes())
+        parts += difflib.unified_diff(before, _text(change.content), f"a/{name}", f"b/{name}")
+    for path in plan.deletions:
+        name = plan.relative(path)
+        parts += difflib.unified_diff(_text(path.read_bytes()), [], f"a/{name}", "/dev/null")
+    return "".join(parts)
+
+
+def plan_json(plan: Plan) -> dict[str, Any]:
+    return {
+        "manifest": str(plan.manifest.path),
+        "project": str(plan.manifest.project_root),
+        "in_sync": plan.in_sync and not plan.conflicts,
+        "files": [{"path": plan.relative(c.path), "action": c.action.value}
+                  for c in plan.changes if c.writes],
+        "removed": [plan.relative(p) for p in plan.deletions],
+        "scenes": [{"path": s.relative, "actions": s.actions} for s in plan.scenes if s.actions],
+        "conflicts": plan.conflicts,
+        "notes": plan.notes,
+    }

@@ -1,0 +1,245 @@
+"""The scene half of a plan: the RosConnector, the generated scripts and the manifest's
+components, attached to their GameObjects through the surgical scene patcher.
+
+Components are recognised by GameObject + script, so a second run finds everything in place.
+Components an earlier apply attached (per the lock) that the manifest no longer asks for are
+removed. Scenes are only read and edited in memory here; writing happens in ``apply.run``.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from unityscaffold.apply.code import CodePlan
+from unityscaffold.apply.lock import LockComponent, LockFile
+from unityscaffold.apply.rossharp import STOCK_SCRIPTS, RosSharp
+from unityscaffold.errors import LocatedError, ScaffoldError, SourceLocation, UserError
+from unityscaffold.manifest.model import Component, Manifest, ObjectPath, StructValue
+from unityscaffold.unity import Enum, ObjectRef, SceneDocument, ScriptRef
+from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
+from unityscaffold.unity.values import FieldValue
+
+__all__ = ["ScenePlan", "plan_scenes"]
+
+_TRANSFORM_CLASS_ID = 4
+
+
+@dataclass(slots=True)
+class ScenePlan:
+    """One scene: its text before and after, and what changed in words."""
+
+    path: Path
+    relative: str
+    before: str
+    after: str
+    actions: list[str] = field(default_factory=list)
+    components: list[LockComponent] = field(default_factory=list)
+
+    @property
+    def changed(self) -> bool:
+        return self.before != self.after
+
+
+def _located(where: SourceLocation, error: UserError) -> LocatedError:
+    if isinstance(error, LocatedError):
+        return error
+    return LocatedError.at(where, error.message, hint=error.hint)
+
+
+class _SceneEditor:
+    """Applies the desired components to one loaded scene, recording what it did."""
+
+    def __init__(self, plan: ScenePlan, doc: SceneDocument) -> None:
+        self.plan = plan
+        self.doc = doc
+
+    def gameobject(self, path: str, create: bool, where: SourceLocation):
+        try:
+            return self.doc.ensure_gameobject(path, create=create)
+        except UserError as error:
+            raise _located(where, error) from None
+
+    def attach(self, path: str, create: bool, script: ScriptRef, fields: list[tuple[str, FieldValue]],
+               where: SourceLocation, source: str):
+        go = self.gameobject(path, create, where)
+        existed = self.doc.find_component(go, script.guid, script.file_id) is not None
+        before = self.doc.text()
+        try:
+            component = self.doc.ensure_component(go, script, fields)
+        except UserError as error:
+            raise _located(where, error) from None
+        name = script.class_name or script.guid
+        if not existed:
+            self.plan.actions.append(f"add {name} to {path}")
+        elif self.doc.text() != before:
+            self.plan.actions.append(f"update {name} on {path}")
+        self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, source))
+        return component
+
+    def prune(self, previous: Iterable[LockComponent], keep: set[tuple[str, str]]) -> None:
+        for old in previous:
+            if old.scene != self.plan.relative or (old.gameobject, old.script) in keep:
+                continue
+            try:
+                go = self.doc.find_gameobject(old.gameobject)
+            except UserError:
+                continue  # the GameObject is gone already: nothing to remove
+            component = self.doc.find_component(go, old.script)
+            if component is not None and self.doc.remove_component(component):
+                self.plan.actions.append(f"remove {old.source or old.script} from {old.gameobject}")
+
+
+def _connector_fields(manifest: Manifest) -> list[tuple[str, FieldValue]]:
+    c = manifest.connector
+    return [
+        ("selectedRosVersion", Enum(int(manifest.ros) - 1)),
+        ("SecondsTimeout", int(c.timeout)),
+        ("Serializer", Enum(int(c.serializer))),
+        ("protocol", Enum(int(c.protocol))),
+        ("RosBridgeServerUrl", c.url),
+    ]
+
+
+@dataclass(frozen=True, slots=True)
+class _Context:
+    manifest: Manifest
+    code: CodePlan
+    rossharp: RosSharp
+    scripts: dict[str, ScriptInfo]
+
+
+def _component_script(ctx: _Context, item: Component) -> ScriptRef:
+    where = item.locations.of("script")
+    try:
+        if item.script.endswith(".cs"):
+            return script_ref_for_file(ctx.manifest.project_root / item.script)
+        found = find_script(ctx.manifest.project_root, item.script, index=ctx.scripts)
+        if found is None and ctx.rossharp.knows(item.script):
+            found = ctx.rossharp.script(item.script)
+    except UserError as error:
+        raise _located(where, error) from None
+    if found is None:
+        names = sorted({info.class_name for info in ctx.scripts.values()})
+        close = difflib.get_close_matches(item.script, names, n=3)
+        hint = f"did you mean {' or '.join(close)}?" if close else (
+            "give the script's class name (its file name) or its path, such as Assets/Foo.cs")
+        raise LocatedError.at(where, f"no script named {item.script} in the project", hint=hint)
+    return found
+
+
+def _reference(ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath,
+               where: SourceLocation) -> ObjectRef:
+    try:
+        go = doc.find_gameobject(value.path)
+    except UserError as error:
+        raise _located(where, error) from None
+    wanted = value.component or ("Transform" if name.lower().endswith("transform") else None)
+    if wanted is None:
+        return ObjectRef(go.file_id)
+    for comp in doc.components_of(go):
+        script_name = ctx.scripts.get(comp.script.guid).class_name if (
+            comp.script and comp.script.guid in ctx.scripts) else None
+        if wanted in (comp.type_name, script_name) or (
+                wanted == "Transform" and comp.class_id == _TRANSFORM_CLASS_ID):
+            return ObjectRef(comp.file_id)
+    raise LocatedError.at(where, f"{value.path} has no {wanted} component",
+                          hint="components there: " + ", ".join(c.type_name for c in doc.components_of(go)))
+
+
+def _value(ctx: _Context, doc: SceneDocument, name: str, value: object,
+           where: SourceLocation) -> FieldValue:
+    if isinstance(value, ObjectPath):
+        return _reference(ctx, doc, name, value, where)
+    if isinstance(value, StructValue):
+        return {k: _value(ctx, doc, k, v, where) for k, v in value.items}
+    if isinstance(value, tuple):
+        return [_value(ctx, doc, name, v, where) for v in value]
+    return value  # type: ignore[return-value]
+
+
+def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
+    m = ctx.manifest
+    editor = _SceneEditor(plan, doc)
+    connector_id = 0
+    connector_script = None
+    if m.connector.scene == plan.relative or any(
+            c.scene == plan.relative and c.script in STOCK_SCRIPTS for c in m.components):
+        connector_script = ctx.rossharp.script("RosConnector")
+    if m.connector.scene == plan.relative:
+        assert connector_script is not None
+        where = m.connector.locations.of("gameobject")
+        connector_id = editor.attach(m.connector.gameobject, True, connector_script,
+                                     _connector_fields(m), where, "connector").file_id
+    for script in ctx.code.scripts:
+        item = script.item
+        if item.scene != plan.relative:
+            continue
+        fields = [("Connector", ObjectRef(connector_id)), *script.view.serialized_fields()]
+        ref = ScriptRef(script.guid, class_name=script.view.class_name,
+                        namespace=script.view.namespace)
+        editor.attach(item.gameobject, item.create, ref, fields, item.locations.of("gameobject"),
+                      script.source)
+    for item in m.components:
+        if item.scene != plan.relative:
+            continue
+        ref = _component_script(ctx, item)
+        where = item.locations.of("gameobject")
+        if item.script in STOCK_SCRIPTS and connector_script is not None:
+            # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
+            editor.attach(item.gameobject, item.create, connector_script, _connector_fields(m),
+                          where, f"connector for {item.script}")
+        fields = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in item.fields]
+        editor.attach(item.gameobject, item.create, ref, fields, where, f"component {item.script}")
+    keep = {(c.gameobject, c.script) for c in plan.components}
+    editor.prune(lock.components, keep)
+
+
+def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocument:
+    path = manifest.project_root / relative
+    if not path.is_file():
+        raise LocatedError.at(where, f"scene {relative} not found in the Unity project "
+                              f"{manifest.project_root}",
+                              hint="scene paths are relative to the project, e.g. Assets/Scenes/Main.unity")
+    try:
+        return SceneDocument.load(path)
+    except UserError as error:
+        raise _located(where, error) from None
+
+
+def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
+    found: dict[str, SourceLocation] = {}
+    for item in (*manifest.topics, *manifest.services, *manifest.components):
+        found.setdefault(item.scene, item.locations.of("scene"))
+    found.setdefault(manifest.connector.scene, manifest.connector.locations.of("scene"))
+    return found
+
+
+def plan_scenes(manifest: Manifest, code: CodePlan, rossharp: RosSharp,
+                scripts: dict[str, ScriptInfo], lock: LockFile) -> list[ScenePlan]:
+    """Every scene the manifest or the lock mentions, edited in memory."""
+    ctx = _Context(manifest, code, rossharp, scripts)
+    locations = _scene_locations(manifest)
+    for old in lock.components:
+        locations.setdefault(old.scene, SourceLocation(str(manifest.path)))
+    plans = []
+    for relative in sorted(locations):
+        if relative not in _scene_locations(manifest) and not (manifest.project_root / relative).is_file():
+            continue  # a scene only the lock knows, since deleted: nothing to prune
+        doc = _load(manifest, relative, locations[relative])
+        before = doc.text()
+        plan = ScenePlan(manifest.project_root / relative, relative, before, before)
+        try:
+            _edit_scene(ctx, plan, doc, lock)
+        except LocatedError:
+            raise
+        except ScaffoldError as error:
+            raise _located(locations[relative], error) if isinstance(error, UserError) else error
+        problems = doc.validate()
+        if problems:
+            raise LocatedError(problems)
+        plan.after = doc.text()
+        plans.append(plan)
+    return plans

@@ -1,0 +1,94 @@
+"""``scaffold apply``, ``scaffold plan`` and ``scaffold init``: the main job."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import typer
+
+from unityscaffold.apply.init import init_project
+from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
+from unityscaffold.apply.run import Mode, run
+from unityscaffold.errors import Exit
+
+ManifestArgument: Path = typer.Argument(Path("robot.yaml"), metavar="MANIFEST",
+                                        help="The manifest (default: robot.yaml).")
+RosEnvOption: bool = typer.Option(
+    False, "--ros-env",
+    help="Also search the ROS environment for interfaces. Off by default so that output "
+    "depends only on files in the repository and the built-in standard definitions.",
+)
+JsonOption: bool = typer.Option(False, "--json", help="Print the plan as JSON for scripts.")
+
+
+def _show(outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
+    plan = outcome.plan
+    if as_json:
+        data = plan_json(plan)
+        data["written"] = [plan.relative(p) for p in outcome.written]
+        data["deleted"] = [plan.relative(p) for p in outcome.deleted]
+        typer.echo(json.dumps(data, indent=2))
+        return
+    if not quiet:
+        typer.echo(plan_summary(plan))
+        if diff:
+            text = plan_diff(plan)
+            if text:
+                typer.echo(text, nl=False)
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``apply``, ``plan`` and ``init`` to the root app."""
+
+    @app.command("apply")
+    def apply_command(
+        manifest: Path = ManifestArgument,
+        check: bool = typer.Option(False, "--check",
+                                   help="Write nothing; exit 1 if the project differs from the manifest."),
+        dry_run: bool = typer.Option(False, "--dry-run", help="Same as `scaffold plan`."),
+        force: bool = typer.Option(False, "--force",
+                                   help="Overwrite generated files even if edited by hand."),
+        quiet: bool = typer.Option(False, "--quiet", "-q", help="Print only errors."),
+        ros_env: bool = RosEnvOption,
+        as_json: bool = JsonOption,
+    ) -> None:
+        """Make the Unity project match the manifest: generate code, wire scenes, write the lock.
+
+        Running it again changes nothing. Generated files edited by hand stop it (see --force);
+        your code belongs in the *.User.cs files, which are created once and never rewritten.
+        """
+        mode = Mode.CHECK if check else Mode.PLAN if dry_run else Mode.APPLY
+        outcome = run(manifest, mode, force=force, use_environment=ros_env)
+        _show(outcome, quiet=quiet, as_json=as_json, diff=dry_run)
+        if mode is Mode.CHECK and not (outcome.plan.in_sync and not outcome.plan.conflicts):
+            raise typer.Exit(int(Exit.DRIFT))
+        if mode is Mode.APPLY and not quiet and not as_json:
+            typer.echo(f"wrote {len(outcome.written)} files, removed {len(outcome.deleted)}")
+
+    @app.command("plan")
+    def plan_command(
+        manifest: Path = ManifestArgument,
+        ros_env: bool = RosEnvOption,
+        as_json: bool = JsonOption,
+    ) -> None:
+        """Show what apply would change (summary and unified diff); write nothing."""
+        outcome = run(manifest, Mode.PLAN, use_environment=ros_env)
+        _show(outcome, quiet=False, as_json=as_json, diff=True)
+
+    @app.command("init")
+    def init_command(
+        directory: Path = typer.Argument(..., metavar="DIR", help="Folder for the new project."),
+        ros: int = typer.Option(2, "--ros", metavar="1|2", help="ROS version of the robot."),
+        force: bool = typer.Option(False, "--force",
+                                   help="Add the template to a non-empty folder (keeps existing files)."),
+    ) -> None:
+        """Create a template Unity project (2022.3, ROS# pinned) with a starter robot.yaml."""
+        if ros not in (1, 2):
+            from unityscaffold.errors import UserError
+
+            raise UserError(f"--ros must be 1 or 2, not {ros}")
+        changes = init_project(directory, ros, force=force)
+        created = sum(1 for c in changes if c.writes)
+        typer.echo(f"created {created} files in {directory}; next: scaffold apply "
+                   f"{directory / 'robot.yaml'}")
