@@ -69,8 +69,7 @@ def ls(
         payload = {"path": str(scene), "generation": doc.generation.label, "gameobjects": nodes}
         typer.echo(json.dumps(payload, indent=2))
         return
-    for depth, node in doc.hierarchy.walk():
-        go = doc._view(node.file_id)
+    for depth, go in doc.tree():
         if go.is_prefab_instance:
             typer.echo(f"{'  ' * depth}{go.name}  (prefab instance &{go.file_id})")
             continue

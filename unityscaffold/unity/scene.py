@@ -9,7 +9,7 @@ GameObject + script, and fileIDs of new objects derive from stable names.
 from __future__ import annotations
 
 import bisect
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
@@ -121,6 +121,17 @@ class SceneDocument:
     def gameobjects(self) -> list[GameObject]:
         """Every GameObject (and PrefabInstance node), in hierarchy order."""
         return [self._view(node.file_id) for _, node in self.hierarchy.walk()]
+
+    def tree(self) -> Iterator[tuple[int, GameObject]]:
+        """(depth, GameObject) for the whole hierarchy, parents before children."""
+        for depth, node in self.hierarchy.walk():
+            yield depth, self._view(node.file_id)
+
+    def gameobject(self, file_id: int) -> GameObject:
+        """The GameObject (or PrefabInstance node) with ``file_id``."""
+        if file_id not in self.hierarchy.nodes:
+            raise UserError(f"{self.path}: no GameObject with fileID {file_id}")
+        return self._view(file_id)
 
     def roots(self) -> list[GameObject]:
         return [self._view(i) for i in self.hierarchy.roots]
