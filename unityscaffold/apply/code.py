@@ -78,7 +78,7 @@ def _view(manifest: Manifest, item: Topic | Service, spec: MessageSpec | Service
                                    rate=item.rate or 0.0)
         return SubscriberScript(**common, topic=item.name, message_type=message,
                                 throttle=item.throttle or 0, queue=item.queue or 1)
-    classes = generation.classes[spec.full_name]
+    classes = generation.classes[f"{spec.package}/srv/{spec.name}"]
     kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
     return kind(**common, service=item.name, request_type=classes["request"].qualified,
                 response_type=classes["response"].qualified)
