@@ -35,7 +35,7 @@ def build_scene(megabytes: float, path: Path) -> int:
     """Write a synthetic scene of about ``megabytes``; return how many copies it holds."""
     text = SOURCE.read_text(encoding="utf-8")
     starts = [m.start() for m in HEADER_RE.finditer(text)]
-    docs = [text[a:b] for a, b in zip(starts, [*starts[1:], len(text)])]
+    docs = [text[a:b] for a, b in zip(starts, [*starts[1:], len(text)], strict=True)]
     prolog = text[: starts[0]]
     settings = [d for d in docs if int(HEADER_RE.match(d).group(2)) in (1, 2, 3, 4)]  # type: ignore[union-attr]
     movable = [d for d in docs if d not in settings and "SceneRoots:" not in d]
@@ -46,18 +46,30 @@ def build_scene(megabytes: float, path: Path) -> int:
     first = {old: 1_000_000_000 + j for j, old in enumerate(old_ids)}
     with path.open("w", encoding="utf-8", newline="") as out:
         # settings objects point at the first copy (RenderSettings.m_Sun is the light)
-        out.write(prolog + REF_RE.sub(lambda m: f"{{fileID: {first.get(int(m.group(1)), int(m.group(1)))}}}",
-                                      "".join(settings)))
+        out.write(
+            prolog
+            + REF_RE.sub(
+                lambda m: f"{{fileID: {first.get(int(m.group(1)), int(m.group(1)))}}}",
+                "".join(settings),
+            )
+        )
         root_ids: list[int] = []
         for k in range(copies):
             mapping = {old: 1_000_000_000 + k * 100 + j for j, old in enumerate(old_ids)}
             root_ids += [mapping[r] for r in roots]
             for doc in movable:
-                doc = HEADER_RE.sub(lambda m: f"--- !u!{m.group(1)} &{mapping[int(m.group(2))]}", doc)
-                doc = REF_RE.sub(lambda m: f"{{fileID: {mapping.get(int(m.group(1)), int(m.group(1)))}}}", doc)
+                doc = HEADER_RE.sub(
+                    lambda m, mp=mapping: f"--- !u!{m.group(1)} &{mp[int(m.group(2))]}", doc
+                )
+                doc = REF_RE.sub(
+                    lambda m, mp=mapping: f"{{fileID: {mp.get(int(m.group(1)), int(m.group(1)))}}}",
+                    doc,
+                )
                 out.write(re.sub(r"^  m_Name: (\S.*)$", rf"  m_Name: \1 {k}", doc, flags=re.M))
-        out.write("--- !u!1660057539 &9223372036854775807\nSceneRoots:\n  m_ObjectHideFlags: 0\n"
-                  "  m_Roots:\n" + "".join(f"  - {{fileID: {r}}}\n" for r in root_ids))
+        out.write(
+            "--- !u!1660057539 &9223372036854775807\nSceneRoots:\n  m_ObjectHideFlags: 0\n"
+            "  m_Roots:\n" + "".join(f"  - {{fileID: {r}}}\n" for r in root_ids)
+        )
     return copies
 
 
@@ -68,10 +80,15 @@ def patch(path: Path, target: str) -> tuple[float, float, bool]:
     go = scene.ensure_gameobject(target)
     previous = None
     for index, script in enumerate(SCRIPTS):
-        fields = [("Topic", f"/topic{index}"), ("Rate", 0.1 * (index + 1)), ("Enabled", True),
-                  ("Mode", Enum(index)), ("Connector", ObjectRef(go.file_id)),
-                  ("Material", AssetRef(2100000, "e84c5fd102288448a8e2305335f05d28", 2)),
-                  ("Names", ["a", "b"])]
+        fields = [
+            ("Topic", f"/topic{index}"),
+            ("Rate", 0.1 * (index + 1)),
+            ("Enabled", True),
+            ("Mode", Enum(index)),
+            ("Connector", ObjectRef(go.file_id)),
+            ("Material", AssetRef(2100000, "e84c5fd102288448a8e2305335f05d28", 2)),
+            ("Names", ["a", "b"]),
+        ]
         if previous is not None:
             fields.append(("Previous", ObjectRef(previous)))
         previous = scene.ensure_component(go, script, fields).file_id
@@ -103,8 +120,12 @@ def child(case: str, path: Path, copies: int) -> None:
 
 def run_case(case: str, path: Path, copies: int) -> tuple[float, float, bool, float]:
     """(wall s, CPU s, wrote, peak MB) of one case, run in a fresh process."""
-    out = subprocess.run([sys.executable, __file__, "--child", case, str(path), str(copies)],
-                         check=True, capture_output=True, text=True).stdout.split()
+    out = subprocess.run(
+        [sys.executable, __file__, "--child", case, str(path), str(copies)],
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout.split()
     return float(out[0]), float(out[1]), out[2] == "1", float(out[3])
 
 
@@ -118,8 +139,10 @@ def main() -> None:
         child(args.child[0], Path(args.child[1]), int(args.child[2]))
         return
     print("times are wall (CPU) seconds; the machine may be shared, so CPU is the fairer figure")
-    print(f"{'size':>8} {'docs':>7} {'patch s':>14} {'no-op s':>14} {'peak MB':>8} "
-          f"{'unityparser s':>16} {'up peak MB':>10} {'speed-up':>9}")
+    print(
+        f"{'size':>8} {'docs':>7} {'patch s':>14} {'no-op s':>14} {'peak MB':>8} "
+        f"{'unityparser s':>16} {'up peak MB':>10} {'speed-up':>9}"
+    )
     with tempfile.TemporaryDirectory() as tmp:
         for size in args.sizes:
             path = Path(tmp) / f"scene_{size:g}mb.unity"
@@ -134,9 +157,12 @@ def main() -> None:
                 seconds, cpu, _, mem = run_case("unityparser", path, copies)
                 up, up_peak = f"{seconds:.2f} ({cpu:.2f})", f"{mem:.0f}"
                 ratio = f"{cpu / first_cpu:.0f}x"
-            print(f"{megabytes:7.1f}M {docs:7d} {first:6.3f} ({first_cpu:.3f}) "
-                  f"{again:6.3f} ({again_cpu:.3f}) {max(peak, peak2):8.0f} {up:>16} {up_peak:>10} "
-                  f"{ratio:>9}", flush=True)
+            print(
+                f"{megabytes:7.1f}M {docs:7d} {first:6.3f} ({first_cpu:.3f}) "
+                f"{again:6.3f} ({again_cpu:.3f}) {max(peak, peak2):8.0f} {up:>16} {up_peak:>10} "
+                f"{ratio:>9}",
+                flush=True,
+            )
             path.unlink()
 
 

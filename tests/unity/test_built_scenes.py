@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 import pytest
 
@@ -56,8 +56,10 @@ Transform:
 def _empty_2022() -> str:
     text = (DATA / "ros-sharp" / "ROSVersionSwitch.unity").read_text()
     settings = text[: text.index("--- !u!1 &")].replace("{fileID: 705507994}", "{fileID: 0}")
-    return settings + ("--- !u!1660057539 &9223372036854775807\nSceneRoots:\n"
-                       "  m_ObjectHideFlags: 0\n  m_Roots: []\n")
+    return settings + (
+        "--- !u!1660057539 &9223372036854775807\nSceneRoots:\n"
+        "  m_ObjectHideFlags: 0\n  m_Roots: []\n"
+    )
 
 
 BASES = {
@@ -70,16 +72,24 @@ BASES = {
 def _build(scene: SceneDocument) -> None:
     robot = scene.ensure_gameobject("Robot/base_link/camera")
     connector = scene.ensure_component("Robot", SCRIPT, {"RosBridgeServerUrl": "ws://robot:9090"})
-    scene.ensure_component(robot, ScriptRef("1" * 32), [
-        ("Topic", "/camera/image"), ("Connector", ObjectRef(connector.file_id)),
-        ("Target", ObjectRef(robot.transform_id or 0)), ("Rate", 30.0)])
+    scene.ensure_component(
+        robot,
+        ScriptRef("1" * 32),
+        [
+            ("Topic", "/camera/image"),
+            ("Connector", ObjectRef(connector.file_id)),
+            ("Target", ObjectRef(robot.transform_id or 0)),
+            ("Rate", 30.0),
+        ],
+    )
     scene.ensure_gameobject("Robot/base_link/lidar")
     scene.ensure_gameobject("World")
 
 
 @pytest.mark.parametrize("base", sorted(BASES))
-def test_a_scene_built_from_scratch_is_sound_and_stable(tmp_path: Path, base: str,
-                                                       assert_sound: Check) -> None:
+def test_a_scene_built_from_scratch_is_sound_and_stable(
+    tmp_path: Path, base: str, assert_sound: Check
+) -> None:
     path = tmp_path / "Built.unity"
     path.write_text(BASES[base])
     scene = SceneDocument.load(path)
@@ -91,7 +101,12 @@ def test_a_scene_built_from_scratch_is_sound_and_stable(tmp_path: Path, base: st
     _build(reloaded)
     assert not reloaded.changed and reloaded.write() is False
     assert [go.path for go in reloaded.gameobjects()][-5:] == [
-        "Robot", "Robot/base_link", "Robot/base_link/camera", "Robot/base_link/lidar", "World"]
+        "Robot",
+        "Robot/base_link",
+        "Robot/base_link/camera",
+        "Robot/base_link/lidar",
+        "World",
+    ]
 
 
 def test_built_objects_use_the_files_generation() -> None:

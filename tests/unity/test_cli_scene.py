@@ -21,10 +21,15 @@ def project(tmp_path: Path) -> Path:
     root = tmp_path / "Proj"
     (root / "Assets" / "Scenes").mkdir(parents=True)
     (root / "ProjectSettings").mkdir()
-    shutil.copy(DATA / "ros-sharp" / "ROSVersionSwitch.unity", root / "Assets" / "Scenes" / "Main.unity")
+    shutil.copy(
+        DATA / "ros-sharp" / "ROSVersionSwitch.unity", root / "Assets" / "Scenes" / "Main.unity"
+    )
     scripts = root / "Assets" / "Scripts"
     scripts.mkdir()
-    for name, guid in [("RosConnector", CONNECTOR_GUID), ("JoyPublisher", "92dedf3f173285b4d9a806dec2334596")]:
+    for name, guid in [
+        ("RosConnector", CONNECTOR_GUID),
+        ("JoyPublisher", "92dedf3f173285b4d9a806dec2334596"),
+    ]:
         (scripts / f"{name}.cs").write_text(f"public class {name} {{}}\n")
         (scripts / f"{name}.cs.meta").write_text(monoscript_meta(guid))
     return root
@@ -37,7 +42,9 @@ def _run(capsys: pytest.CaptureFixture[str], *args: object) -> tuple[int, str, s
     return code, out, err
 
 
-def test_ls_shows_the_tree_with_script_names(project: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_ls_shows_the_tree_with_script_names(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     code, out, _ = _run(capsys, "scene", "ls", project / "Assets" / "Scenes" / "Main.unity")
     assert code == 0
     assert out.splitlines() == [
@@ -47,30 +54,58 @@ def test_ls_shows_the_tree_with_script_names(project: Path, capsys: pytest.Captu
     ]
 
 
-def test_ls_json_lists_components_with_their_scripts(project: Path,
-                                                      capsys: pytest.CaptureFixture[str]) -> None:
-    code, out, _ = _run(capsys, "scene", "ls", project / "Assets" / "Scenes" / "Main.unity", "--json")
+def test_ls_json_lists_components_with_their_scripts(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, _ = _run(
+        capsys, "scene", "ls", project / "Assets" / "Scenes" / "Main.unity", "--json"
+    )
     data = json.loads(out)
     assert code == 0 and data["generation"].startswith("2022")
     socket = next(g for g in data["gameobjects"] if g["path"] == "RosSocket")
-    assert socket["components"][1]["script"] == {"guid": CONNECTOR_GUID, "fileID": 11500000,
-                                                  "name": "RosConnector"}
+    assert socket["components"][1]["script"] == {
+        "guid": CONNECTOR_GUID,
+        "fileID": 11500000,
+        "name": "RosConnector",
+    }
 
 
 def test_ls_marks_prefab_instances(capsys: pytest.CaptureFixture[str]) -> None:
-    code, out, _ = _run(capsys, "scene", "ls", DATA / "ros-tcp-connector" / "EmptyVisualizationSuite.prefab")
+    code, out, _ = _run(
+        capsys, "scene", "ls", DATA / "ros-tcp-connector" / "EmptyVisualizationSuite.prefab"
+    )
     assert code == 0
     assert "  BasicDrawingManager  (prefab instance &1914626938635344595)" in out.splitlines()
 
 
-def test_attach_writes_once_then_reports_unchanged(project: Path,
-                                                   capsys: pytest.CaptureFixture[str]) -> None:
+def test_attach_writes_once_then_reports_unchanged(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     scene = project / "Assets" / "Scenes" / "Main.unity"
-    args = ["scene", "attach", scene, "--gameobject", "Robot/base_link", "--create",
-            "--script", project / "Assets" / "Scripts" / "JoyPublisher.cs",
-            "--set", "Topic=/joy", "--set", "CycleTime=0.1", "--set", "Flag=true",
-            "--set", "Connector=@RosSocket:RosConnector", "--set", "Base=@Robot/base_link:Transform",
-            "--set", "Names=[a, '@Robot', '@@at']", "--set", "Material={fileID: 2100000, guid: e84c5fd102288448a8e2305335f05d28, type: 2}"]
+    args = [
+        "scene",
+        "attach",
+        scene,
+        "--gameobject",
+        "Robot/base_link",
+        "--create",
+        "--script",
+        project / "Assets" / "Scripts" / "JoyPublisher.cs",
+        "--set",
+        "Topic=/joy",
+        "--set",
+        "CycleTime=0.1",
+        "--set",
+        "Flag=true",
+        "--set",
+        "Connector=@RosSocket:RosConnector",
+        "--set",
+        "Base=@Robot/base_link:Transform",
+        "--set",
+        "Names=[a, '@Robot', '@@at']",
+        "--set",
+        "Material={fileID: 2100000, guid: e84c5fd102288448a8e2305335f05d28, type: 2}",
+    ]
     code, out, _ = _run(capsys, *args)
     assert code == 0 and out.startswith(f"updated {scene}: JoyPublisher on Robot/base_link")
     doc = SceneDocument.load(scene)
@@ -87,16 +122,29 @@ def test_attach_writes_once_then_reports_unchanged(project: Path,
     assert code == 0 and out.startswith("unchanged") and scene.stat().st_mtime_ns == before
 
 
-def test_dry_run_prints_the_diff_and_writes_nothing(project: Path,
-                                                    capsys: pytest.CaptureFixture[str]) -> None:
+def test_dry_run_prints_the_diff_and_writes_nothing(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     scene = project / "Assets" / "Scenes" / "Main.unity"
     before = scene.read_bytes()
-    code, out, _ = _run(capsys, "scene", "attach", scene, "-g", "RosSocket", "--guid", CONNECTOR_GUID,
-                        "--set", "SecondsTimeout=30", "--dry-run")
+    code, out, _ = _run(
+        capsys,
+        "scene",
+        "attach",
+        scene,
+        "-g",
+        "RosSocket",
+        "--guid",
+        CONNECTOR_GUID,
+        "--set",
+        "SecondsTimeout=30",
+        "--dry-run",
+    )
     assert code == 0 and scene.read_bytes() == before
     assert "-  SecondsTimeout: 10\n+  SecondsTimeout: 30\n" in out
-    code, out, _ = _run(capsys, "scene", "attach", scene, "-g", "RosSocket", "--guid", CONNECTOR_GUID,
-                        "--dry-run")
+    code, out, _ = _run(
+        capsys, "scene", "attach", scene, "-g", "RosSocket", "--guid", CONNECTOR_GUID, "--dry-run"
+    )
     assert code == 0 and out.startswith("no changes")
 
 
@@ -107,9 +155,18 @@ def test_dry_run_prints_the_diff_and_writes_nothing(project: Path,
         (["-g", "RosSocket"], "exactly one of --script"),
         (["-g", "RosSocket", "--guid", "XYZ"], "not a Unity GUID"),
         (["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "novalue"], "NAME=VALUE"),
-        (["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "X=@Nope"], "no GameObject named 'Nope'"),
-        (["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "X=@RosSocket:Camera"], "has no component 'Camera'"),
-        (["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "X=[unclosed"], "cannot read value"),
+        (
+            ["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "X=@Nope"],
+            "no GameObject named 'Nope'",
+        ),
+        (
+            ["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "X=@RosSocket:Camera"],
+            "has no component 'Camera'",
+        ),
+        (
+            ["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "X=[unclosed"],
+            "cannot read value",
+        ),
         (["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "m_Script=1"], "cannot be set"),
         (["-g", "RosSocket", "--script", "Missing.cs"], "no .meta file"),
     ],
@@ -119,26 +176,31 @@ def test_user_mistakes_exit_2_with_a_message_and_write_nothing(
 ) -> None:
     scene = project / "Assets" / "Scenes" / "Main.unity"
     before = scene.read_bytes()
-    code, out, err = _run(capsys, "scene", "attach", scene, *args)
+    code, _out, err = _run(capsys, "scene", "attach", scene, *args)
     assert code == 2 and message in err
     assert scene.read_bytes() == before
 
 
 @pytest.mark.parametrize(
     ("content", "message"),
-    [(b"\x00\x01binary", "binary-serialized"),
-     (None, "refers to fileID 42"),
-     (b"%YAML 1.1\n--- !u!1 &1\nGameObject:\n  m_Name: {a", "does not end with a line break")],
+    [
+        (b"\x00\x01binary", "binary-serialized"),
+        (None, "refers to fileID 42"),
+        (b"%YAML 1.1\n--- !u!1 &1\nGameObject:\n  m_Name: {a", "does not end with a line break"),
+    ],
     ids=["binary", "dangling", "truncated"],
 )
-def test_corrupt_scenes_are_refused_by_the_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str],
-                                               content: bytes | None, message: str) -> None:
+def test_corrupt_scenes_are_refused_by_the_cli(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], content: bytes | None, message: str
+) -> None:
     scene = tmp_path / "Bad.unity"
     if content is None:
         text = (DATA / "ros-sharp" / "ROSVersionSwitch.unity").read_text()
         content = text.replace("m_Father: {fileID: 0}", "m_Father: {fileID: 42}", 1).encode()
     scene.write_bytes(content)
-    code, _, err = _run(capsys, "scene", "attach", scene, "-g", "RosSocket", "--guid", CONNECTOR_GUID)
+    code, _, err = _run(
+        capsys, "scene", "attach", scene, "-g", "RosSocket", "--guid", CONNECTOR_GUID
+    )
     assert code == 2 and message in err
     assert scene.read_bytes() == content
     assert [p.name for p in tmp_path.iterdir()] == ["Bad.unity"]

@@ -26,8 +26,10 @@ def _load(name: str) -> SceneDocument:
             ["World", "World/Main Camera", "World/Directional Light", "World/Plane"],
         ),
         ("Table.prefab", ["Table", "Table/Plane"]),
-        ("EmptyVisualizationSuite.prefab",
-         ["BlankVisualizationSuite", "BlankVisualizationSuite/BasicDrawingManager"]),
+        (
+            "EmptyVisualizationSuite.prefab",
+            ["BlankVisualizationSuite", "BlankVisualizationSuite/BasicDrawingManager"],
+        ),
         ("SampleScene.unity", []),
     ],
 )
@@ -89,7 +91,9 @@ def test_a_path_into_a_prefab_instance_explains_why_it_cannot_be_reached() -> No
 
 
 def test_an_ambiguous_path_lists_the_candidates() -> None:
-    text = _load("ROSVersionSwitch.unity").text().replace("m_Name: Main Camera", "m_Name: RosSocket")
+    text = (
+        _load("ROSVersionSwitch.unity").text().replace("m_Name: Main Camera", "m_Name: RosSocket")
+    )
     scene = SceneDocument.parse(text, "dupe.unity")
     with pytest.raises(UserError) as info:
         scene.find_gameobject("RosSocket")
@@ -112,8 +116,9 @@ def test_an_empty_path_segment_is_refused(path: str) -> None:
         ("Target.prefab", True, False, False),
     ],
 )
-def test_the_generation_is_detected_per_file(name: str, root_order: bool, scene_roots: bool,
-                                             is_scene: bool) -> None:
+def test_the_generation_is_detected_per_file(
+    name: str, root_order: bool, scene_roots: bool, is_scene: bool
+) -> None:
     gen = _load(name).generation
     assert (gen.root_order, gen.scene_roots, gen.is_scene) == (root_order, scene_roots, is_scene)
     assert gen.modern_prefab_fields and not gen.classid_component_items

@@ -8,7 +8,13 @@ import pytest
 import yaml
 
 from unityscaffold.errors import UserError
-from unityscaffold.unity.meta import folder_meta, guid_for, meta_guid, monoscript_meta, read_meta_guid
+from unityscaffold.unity.meta import (
+    folder_meta,
+    guid_for,
+    meta_guid,
+    monoscript_meta,
+    read_meta_guid,
+)
 from unityscaffold.unity.project import (
     FALLBACK_SALT,
     find_project_root,
@@ -56,7 +62,9 @@ def test_metas_use_unitys_layout_and_read_back(tmp_path: Path, render) -> None: 
 
 
 def test_a_two_line_meta_is_read(tmp_path: Path) -> None:
-    (tmp_path / "x.meta").write_text("fileFormatVersion: 2\nguid: ff98778ae051cfd40a6e4effdf851ebd\n")
+    (tmp_path / "x.meta").write_text(
+        "fileFormatVersion: 2\nguid: ff98778ae051cfd40a6e4effdf851ebd\n"
+    )
     assert read_meta_guid(tmp_path / "x.meta") == "ff98778ae051cfd40a6e4effdf851ebd"
     assert read_meta_guid(tmp_path / "missing.meta") is None
 
@@ -67,7 +75,8 @@ def _project(tmp_path: Path, product_guid: str | None = None) -> Path:
     (root / "ProjectSettings").mkdir()
     if product_guid:
         (root / "ProjectSettings" / "ProjectSettings.asset").write_text(
-            f"%YAML 1.1\n--- !u!129 &1\nPlayerSettings:\n  productGUID: {product_guid}\n")
+            f"%YAML 1.1\n--- !u!129 &1\nPlayerSettings:\n  productGUID: {product_guid}\n"
+        )
     pkg = root / "Library" / "PackageCache" / "com.siemens.ros-sharp@1" / "Runtime"
     pkg.mkdir(parents=True)
     (pkg / "RosConnector.cs").write_text("class RosConnector {}")
@@ -100,7 +109,7 @@ def test_scripts_are_found_by_class_name_in_assets_and_packages(tmp_path: Path) 
 def test_two_scripts_with_one_class_name_are_ambiguous(tmp_path: Path) -> None:
     root = _project(tmp_path)
     (root / "Assets" / "RosConnector.cs.meta").write_text(monoscript_meta("c" * 32))
-    with pytest.raises(UserError, match="2 scripts named RosConnector.cs"):
+    with pytest.raises(UserError, match=r"2 scripts named RosConnector\.cs"):
         find_script(root, "RosConnector")
 
 
@@ -109,5 +118,5 @@ def test_a_script_file_reference_comes_from_its_meta(tmp_path: Path) -> None:
     ref = script_ref_for_file(root / "Assets" / "Scripts" / "Mine.cs")
     assert (ref.guid, ref.file_id, ref.class_name) == ("a" * 32, 11500000, "Mine")
     (root / "Assets" / "NoMeta.cs").write_text("")
-    with pytest.raises(UserError, match="no .meta"):
+    with pytest.raises(UserError, match=r"no \.meta"):
         script_ref_for_file(root / "Assets" / "NoMeta.cs")

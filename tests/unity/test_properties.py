@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -19,23 +19,33 @@ BASES = {
     "2020-prefab": DATA / "unity-robotics-hub" / "Table.prefab",
 }
 SCRIPTS = [ScriptRef(c * 32) for c in "abc"] + [
-    ScriptRef.for_dll_class("f70555f144d8491a825f0804e09c671c", "UnityEngine.UI", "Text")]
+    ScriptRef.for_dll_class("f70555f144d8491a825f0804e09c671c", "UnityEngine.UI", "Text")
+]
 Check = Callable[[SceneDocument], None]
 
 names = st.sampled_from(["Robot", "base_link", "camera", "Main Camera", "Ünïcode", "a b"])
 paths = st.lists(names, min_size=1, max_size=3).map("/".join)
 scalars = st.one_of(
-    st.integers(-(2**31), 2**31 - 1), st.booleans(), st.floats(width=32, allow_nan=False),
+    st.integers(-(2**31), 2**31 - 1),
+    st.booleans(),
+    st.floats(width=32, allow_nan=False),
     st.text(st.characters(codec="utf-8", exclude_categories=["Cs"]), max_size=30),
 )
 values = st.one_of(scalars, st.lists(scalars, max_size=3), st.tuples(st.just("ref"), paths))
-fields = st.lists(st.tuples(st.sampled_from(["Topic", "Rate", "Enabled", "Target", "Items"]),
-                            values), max_size=4, unique_by=lambda f: f[0])
-edits = st.lists(st.one_of(
-    st.tuples(st.just("go"), paths),
-    st.tuples(st.just("attach"), paths, st.integers(0, len(SCRIPTS) - 1), fields),
-    st.tuples(st.just("remove"), paths, st.integers(0, len(SCRIPTS) - 1)),
-), min_size=1, max_size=6)
+fields = st.lists(
+    st.tuples(st.sampled_from(["Topic", "Rate", "Enabled", "Target", "Items"]), values),
+    max_size=4,
+    unique_by=lambda f: f[0],
+)
+edits = st.lists(
+    st.one_of(
+        st.tuples(st.just("go"), paths),
+        st.tuples(st.just("attach"), paths, st.integers(0, len(SCRIPTS) - 1), fields),
+        st.tuples(st.just("remove"), paths, st.integers(0, len(SCRIPTS) - 1)),
+    ),
+    min_size=1,
+    max_size=6,
+)
 
 
 def _root(scene: SceneDocument, path: str) -> str:
@@ -58,17 +68,22 @@ def _apply(scene: SceneDocument, sequence: list[tuple]) -> None:  # type: ignore
             resolved = [(name, _value(scene, v)) for name, v in edit[3]]
             scene.ensure_component(scene.ensure_gameobject(path), SCRIPTS[edit[2]], resolved)
         else:
-            found = scene.find_component(scene.ensure_gameobject(path), SCRIPTS[edit[2]].guid,
-                                         SCRIPTS[edit[2]].file_id)
+            found = scene.find_component(
+                scene.ensure_gameobject(path), SCRIPTS[edit[2]].guid, SCRIPTS[edit[2]].file_id
+            )
             if found is not None:
                 scene.remove_component(found)
 
 
 @pytest.mark.parametrize("base", sorted(BASES))
-@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(
+    max_examples=30, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
 @given(sequence=edits)
 def test_random_edit_sequences_keep_scenes_valid_and_idempotent(
-    base: str, sequence: list[tuple], assert_sound: Check  # type: ignore[type-arg]
+    base: str,
+    sequence: list[tuple],
+    assert_sound: Check,  # type: ignore[type-arg]
 ) -> None:
     scene = SceneDocument.load(BASES[base])
     _apply(scene, sequence)

@@ -18,11 +18,23 @@ from unityscaffold.unity.values import AssetRef, Enum, InlineMap, ObjectRef
 
 # Written by Unity itself (reference/unity-yaml.md §1.7 and the corpus).
 UNITY_FLOATS = [
-    (0.5, "0.5"), (0.95686275, "0.95686275"), (21.80208, "21.80208"), (1000.0, "1000"),
-    (6570.0, "6570"), (0.000000089406925, "0.000000089406925"),
-    (-7.1054147e-15, "-7.1054147e-15"), (1.5e11, "1.5e+11"), (3.4028235e38, "3.4028235e+38"),
-    (-0.0, "-0"), (0.0, "0"), (math.inf, "Infinity"), (0.1, "0.1"), (0.022, "0.022"),
-    (0.40821788, "0.40821788"), (-0.23456968, "-0.23456968"), (1 / 3, "0.33333334"),
+    (0.5, "0.5"),
+    (0.95686275, "0.95686275"),
+    (21.80208, "21.80208"),
+    (1000.0, "1000"),
+    (6570.0, "6570"),
+    (0.000000089406925, "0.000000089406925"),
+    (-7.1054147e-15, "-7.1054147e-15"),
+    (1.5e11, "1.5e+11"),
+    (3.4028235e38, "3.4028235e+38"),
+    (-0.0, "-0"),
+    (0.0, "0"),
+    (math.inf, "Infinity"),
+    (0.1, "0.1"),
+    (0.022, "0.022"),
+    (0.40821788, "0.40821788"),
+    (-0.23456968, "-0.23456968"),
+    (1 / 3, "0.33333334"),
 ]
 
 
@@ -94,8 +106,10 @@ def _readers(text: str) -> list[object]:
     return [yaml.load(text, Loader=yaml.BaseLoader), ruamel.load(io.StringIO(text))]
 
 
-@given(st.text(st.characters(codec="utf-8", exclude_categories=["Cs"]), max_size=200),
-       st.integers(min_value=0, max_value=70))
+@given(
+    st.text(st.characters(codec="utf-8", exclude_categories=["Cs"]), max_size=200),
+    st.integers(min_value=0, max_value=70),
+)
 def test_every_emitted_string_reads_back_unchanged(value: str, indent: int) -> None:
     key = "k" * (indent + 1)
     doc = "\n".join(emit_field(key, value, 2)) + "\n"
@@ -105,13 +119,22 @@ def test_every_emitted_string_reads_back_unchanged(value: str, indent: int) -> N
     assert doc.isascii()
 
 
-@given(st.one_of(
-    st.booleans(), st.integers(-(2**63), 2**63 - 1), st.floats(width=32, allow_nan=False),
-    st.builds(ObjectRef, st.integers(-(2**63), 2**63 - 1)),
-    st.builds(AssetRef, st.integers(-(2**31), 2**31), st.text("0123456789abcdef", min_size=32,
-                                                                max_size=32), st.integers(0, 3)),
-    st.lists(st.text(max_size=20), max_size=4), st.builds(Enum, st.integers(0, 9)),
-))
+@given(
+    st.one_of(
+        st.booleans(),
+        st.integers(-(2**63), 2**63 - 1),
+        st.floats(width=32, allow_nan=False),
+        st.builds(ObjectRef, st.integers(-(2**63), 2**63 - 1)),
+        st.builds(
+            AssetRef,
+            st.integers(-(2**31), 2**31),
+            st.text("0123456789abcdef", min_size=32, max_size=32),
+            st.integers(0, 3),
+        ),
+        st.lists(st.text(max_size=20), max_size=4),
+        st.builds(Enum, st.integers(0, 9)),
+    )
+)
 def test_every_emitted_value_compares_equal_to_itself_once_read_back(value: object) -> None:
     text = "\n".join(emit_field("field", value)) + "\n"  # type: ignore[arg-type]
     stored = yaml.load(text, Loader=yaml.BaseLoader)["field"]
@@ -121,13 +144,24 @@ def test_every_emitted_value_compares_equal_to_itself_once_read_back(value: obje
 @pytest.mark.parametrize(
     ("stored", "value", "equal"),
     [
-        ("0.50", 0.5, True), ("0.5", 0.25, False), ("1", True, True), ("0", True, False),
-        ("10", 10, True), ("10", "10", True), ("abc", 3, False), ({"fileID": "5"}, ObjectRef(5), True),
+        ("0.50", 0.5, True),
+        ("0.5", 0.25, False),
+        ("1", True, True),
+        ("0", True, False),
+        ("10", 10, True),
+        ("10", "10", True),
+        ("abc", 3, False),
+        ({"fileID": "5"}, ObjectRef(5), True),
         ({"fileID": "5", "guid": "a" * 32, "type": "3"}, ObjectRef(5), False),
-        ({"x": "0", "y": "1"}, InlineMap.of(x=0, y=1.0), True), ([], [], True), ("", "", True),
-        (["1", "2"], [1, 2], True), (["1"], [1, 2], False), ("-0", 0.0, False),
+        ({"x": "0", "y": "1"}, InlineMap.of(x=0, y=1.0), True),
+        ([], [], True),
+        ("", "", True),
+        (["1", "2"], [1, 2], True),
+        (["1"], [1, 2], False),
+        ("-0", 0.0, False),
     ],
 )
-def test_a_stored_value_equals_a_requested_one_by_meaning_not_bytes(stored: object, value: object,
-                                                                    equal: bool) -> None:
+def test_a_stored_value_equals_a_requested_one_by_meaning_not_bytes(
+    stored: object, value: object, equal: bool
+) -> None:
     assert value_equals(stored, value) is equal  # type: ignore[arg-type]

@@ -59,8 +59,9 @@ def test_a_truncated_file_is_refused(corpus_file: Path, cut: int) -> None:
     ],
     ids=["binary", "plain-yaml", "empty", "not-utf8"],
 )
-def test_a_file_that_is_not_unity_text_is_refused(tmp_path: Path, content: bytes, message: str
-                                                  ) -> None:
+def test_a_file_that_is_not_unity_text_is_refused(
+    tmp_path: Path, content: bytes, message: str
+) -> None:
     path = tmp_path / "bad.unity"
     path.write_bytes(content)
     with pytest.raises(UserError, match=message):

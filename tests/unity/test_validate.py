@@ -18,12 +18,22 @@ SOURCE = DATA / "ros-sharp" / "ROSVersionSwitch.unity"
 SCRIPT = ScriptRef("ff98778ae051cfd40a6e4effdf851ebd")
 
 CORRUPTIONS = {
-    "duplicate-file-id": (("--- !u!114 &1259760941", "--- !u!114 &1259760939"), "more than one object"),
-    "dangling-reference": (("m_Father: {fileID: 0}\n  m_LocalEulerAnglesHint: {x: 50",
-                            "m_Father: {fileID: 42}\n  m_LocalEulerAnglesHint: {x: 50"),
-                           "refers to fileID 42"),
+    "duplicate-file-id": (
+        ("--- !u!114 &1259760941", "--- !u!114 &1259760939"),
+        "more than one object",
+    ),
+    "dangling-reference": (
+        (
+            "m_Father: {fileID: 0}\n  m_LocalEulerAnglesHint: {x: 50",
+            "m_Father: {fileID: 42}\n  m_LocalEulerAnglesHint: {x: 50",
+        ),
+        "refers to fileID 42",
+    ),
     "component-not-listed": (("  - component: {fileID: 1259760941}\n", ""), "does not list it"),
-    "scene-roots-mismatch": (("  - {fileID: 705507995}\n", ""), "m_Roots: does not match the scene's roots: omits root &705507995"),
+    "scene-roots-mismatch": (
+        ("  - {fileID: 705507995}\n", ""),
+        "m_Roots: does not match the scene's roots: omits root &705507995",
+    ),
 }
 
 
@@ -53,7 +63,10 @@ def test_a_diagnostic_names_the_document_key_and_line(tmp_path: Path) -> None:
     (old, new), _ = CORRUPTIONS["dangling-reference"]
     scene = SceneDocument.parse(SOURCE.read_text().replace(old, new), "s.unity")
     problem = scene.validate()[0]
-    assert problem.message == "--- !u!4 &705507995: m_Father: refers to fileID 42, which is not in the file"
+    assert (
+        problem.message
+        == "--- !u!4 &705507995: m_Father: refers to fileID 42, which is not in the file"
+    )
     assert problem.location.source_line == "  m_Father: {fileID: 42}"
     assert scene.text().splitlines()[problem.location.line - 1] == problem.location.source_line
 
@@ -91,7 +104,10 @@ def test_the_diff_of_a_large_file_keeps_real_line_numbers() -> None:
     old = "".join(f"line {i}\n" for i in range(1000))
     new = old.replace("line 500\n", "line 500 changed\n")
     text = diff(old, new, "/abs/Scene.unity")
-    assert text.splitlines()[:3] == ["--- a/abs/Scene.unity", "+++ b/abs/Scene.unity",
-                                     "@@ -498,7 +498,7 @@"]
+    assert text.splitlines()[:3] == [
+        "--- a/abs/Scene.unity",
+        "+++ b/abs/Scene.unity",
+        "@@ -498,7 +498,7 @@",
+    ]
     assert "-line 500\n+line 500 changed\n" in text
     assert diff(old, old, "x") == ""

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Annotated
 
 import typer
 
@@ -48,9 +49,18 @@ def _node_json(scene: SceneDocument, go: GameObject, names: dict[str, str]) -> d
         "fileID": go.file_id,
         "prefabInstance": go.is_prefab_instance,
         "components": [
-            {"fileID": c.file_id, "class": c.type_name, "name": component_label(c, names),
-             "script": None if c.script is None else
-             {"guid": c.script.guid, "fileID": c.script.file_id, "name": names.get(c.script.guid)}}
+            {
+                "fileID": c.file_id,
+                "class": c.type_name,
+                "name": component_label(c, names),
+                "script": None
+                if c.script is None
+                else {
+                    "guid": c.script.guid,
+                    "fileID": c.script.file_id,
+                    "name": names.get(c.script.guid),
+                },
+            }
             for c in comps
         ],
     }
@@ -58,8 +68,8 @@ def _node_json(scene: SceneDocument, go: GameObject, names: dict[str, str]) -> d
 
 @app.command("ls")
 def ls(
-    scene: Path = typer.Argument(..., help="A .unity scene or .prefab file."),
-    as_json: bool = typer.Option(False, "--json", help="Print JSON instead of a tree."),
+    scene: Annotated[Path, typer.Argument(help="A .unity scene or .prefab file.")],
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON instead of a tree.")] = False,
 ) -> None:
     """Show the hierarchy with each GameObject's components (script names when resolvable)."""
     doc = SceneDocument.load(scene)
@@ -91,23 +101,40 @@ def _script_ref(script: Path | None, guid: str | None, dll_class: str | None) ->
             return ScriptRef.for_dll_class(guid, namespace, name)
         return ScriptRef(guid)
     except ValueError as exc:
-        raise UserError(str(exc), hint="a GUID is 32 lowercase hex digits, as in .meta files") from None
+        raise UserError(
+            str(exc), hint="a GUID is 32 lowercase hex digits, as in .meta files"
+        ) from None
 
 
 @app.command("attach")
 def attach(
-    scene: Path = typer.Argument(..., help="A .unity scene or .prefab file."),
-    gameobject: str = typer.Option(..., "--gameobject", "-g", help="Hierarchy path: Robot/base_link."),
-    script: Path | None = typer.Option(None, "--script", help="The .cs file (its .meta gives the GUID)."),
-    guid: str | None = typer.Option(None, "--guid", help="The script's (or DLL's) GUID."),
-    dll_class: str | None = typer.Option(None, "--dll-class", help="Namespace.Class inside the DLL given by --guid."),
-    assignments: list[str] = typer.Option([], "--set", help=_SET_HELP, metavar="NAME=VALUE"),
-    create: bool = typer.Option(False, "--create", help="Create missing GameObjects on the path."),
-    dry_run: bool = typer.Option(False, "--dry-run", help="Print the unified diff; write nothing."),
+    scene: Annotated[Path, typer.Argument(help="A .unity scene or .prefab file.")],
+    gameobject: Annotated[
+        str, typer.Option("--gameobject", "-g", help="Hierarchy path: Robot/base_link.")
+    ],
+    script: Annotated[
+        Path | None, typer.Option("--script", help="The .cs file (its .meta gives the GUID).")
+    ] = None,
+    guid: Annotated[
+        str | None, typer.Option("--guid", help="The script's (or DLL's) GUID.")
+    ] = None,
+    dll_class: Annotated[
+        str | None,
+        typer.Option("--dll-class", help="Namespace.Class inside the DLL given by --guid."),
+    ] = None,
+    assignments: Annotated[
+        list[str] | None, typer.Option("--set", help=_SET_HELP, metavar="NAME=VALUE")
+    ] = None,
+    create: Annotated[
+        bool, typer.Option("--create", help="Create missing GameObjects on the path.")
+    ] = False,
+    dry_run: Annotated[
+        bool, typer.Option("--dry-run", help="Print the unified diff; write nothing.")
+    ] = False,
 ) -> None:
     """Attach a MonoBehaviour to a GameObject, or update the one already there (idempotent)."""
     ref = _script_ref(script, guid, dll_class)
-    pairs = [parse_assignment(a) for a in assignments]
+    pairs = [parse_assignment(a) for a in assignments or []]
     doc = _load_checked(scene)
     names = _script_names(scene)
     go = doc.ensure_gameobject(gameobject, create=create)

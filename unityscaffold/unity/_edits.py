@@ -32,11 +32,21 @@ if TYPE_CHECKING:
 __all__ = ["ensure_component", "ensure_gameobject", "remove_component", "set_fields"]
 
 _FIELD_NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?: [A-Za-z0-9_]+)*")
-_STRUCTURAL = frozenset({
-    "m_GameObject", "m_Script", "m_Component", "m_Father", "m_Children", "m_PrefabInstance",
-    "m_CorrespondingSourceObject", "m_PrefabAsset", "m_PrefabParentObject", "m_PrefabInternal",
-    "serializedVersion",
-})
+_STRUCTURAL = frozenset(
+    {
+        "m_GameObject",
+        "m_Script",
+        "m_Component",
+        "m_Father",
+        "m_Children",
+        "m_PrefabInstance",
+        "m_CorrespondingSourceObject",
+        "m_PrefabAsset",
+        "m_PrefabParentObject",
+        "m_PrefabInternal",
+        "serializedVersion",
+    }
+)
 _PREFAB_HINT = "edit the prefab asset instead, or unpack the prefab instance in Unity first"
 
 
@@ -56,19 +66,36 @@ def _refuse(scene: SceneDocument, doc: Doc, message: str, hint: str | None = Non
 
 def _require_doc_editable(scene: SceneDocument, doc: Doc) -> None:
     if doc.stripped:
-        raise _refuse(scene, doc, "is a placeholder (stripped) for an object inside a prefab "
-                      "instance; its data lives in the prefab asset", _PREFAB_HINT)
-    source = F.ref_value(doc, "m_CorrespondingSourceObject") or F.ref_value(doc, "m_PrefabParentObject")
+        raise _refuse(
+            scene,
+            doc,
+            "is a placeholder (stripped) for an object inside a prefab "
+            "instance; its data lives in the prefab asset",
+            _PREFAB_HINT,
+        )
+    source = F.ref_value(doc, "m_CorrespondingSourceObject") or F.ref_value(
+        doc, "m_PrefabParentObject"
+    )
     if source:
-        raise _refuse(scene, doc, "belongs to a prefab instance (its m_CorrespondingSourceObject "
-                      "is set); changes would become overrides", _PREFAB_HINT)
+        raise _refuse(
+            scene,
+            doc,
+            "belongs to a prefab instance (its m_CorrespondingSourceObject "
+            "is set); changes would become overrides",
+            _PREFAB_HINT,
+        )
 
 
 def _require_editable(scene: SceneDocument, go: GameObject) -> None:
     doc = scene.document(go.file_id)
     if go.prefab_instance_id and doc is not None and doc.class_id == 1001:
-        raise _refuse(scene, doc, f"'{go.path}' is a prefab instance; adding to it needs a "
-                      "prefab override, which is not supported", _PREFAB_HINT)
+        raise _refuse(
+            scene,
+            doc,
+            f"'{go.path}' is a prefab instance; adding to it needs a "
+            "prefab override, which is not supported",
+            _PREFAB_HINT,
+        )
     if doc is not None:
         _require_doc_editable(scene, doc)
 
@@ -77,7 +104,9 @@ def _exemplar(scene: SceneDocument, class_id: int) -> Doc | None:
     """An existing object of the class, not from a prefab, whose layout new ones copy."""
     for doc in scene.documents():
         if doc.class_id == class_id and not doc.stripped:
-            source = F.ref_value(doc, "m_CorrespondingSourceObject") or F.ref_value(doc, "m_PrefabParentObject")
+            source = F.ref_value(doc, "m_CorrespondingSourceObject") or F.ref_value(
+                doc, "m_PrefabParentObject"
+            )
             if not source:
                 return doc
     return None
@@ -89,8 +118,9 @@ def _emit(scene: SceneDocument, name: str, value: FieldValue) -> list[str]:
     if name in _STRUCTURAL:
         raise UserError(f"'{name}' is maintained by Unity's object structure and cannot be set")
     try:
-        return emit_field(name, value, 2,
-                          quote_trailing_bracket=scene.generation.qualified_class_identifier)
+        return emit_field(
+            name, value, 2, quote_trailing_bracket=scene.generation.qualified_class_identifier
+        )
     except (TypeError, ValueError) as exc:
         raise UserError(f"field '{name}': {exc}") from None
 
@@ -136,8 +166,10 @@ def _create(scene: SceneDocument, parent_id: int | None, path: str, name: str) -
     parent_tr: Doc | None = None
     if parent_id is None:
         if not gen.is_scene and roots:
-            raise UserError(f"{scene.path}: a prefab has a single root; '{path}' would be another",
-                            hint=f"create it under '{scene.hierarchy.paths[roots[0]]}'")
+            raise UserError(
+                f"{scene.path}: a prefab has a single root; '{path}' would be another",
+                hint=f"create it under '{scene.hierarchy.paths[roots[0]]}'",
+            )
         order = len(roots)
     else:
         transform_id = scene.hierarchy.nodes[parent_id].transform_id
@@ -147,8 +179,9 @@ def _create(scene: SceneDocument, parent_id: int | None, path: str, name: str) -
         order = len(F.list_refs(parent_tr, "m_Children"))
     father = parent_tr.file_id if parent_tr is not None else 0
     go_text = new_gameobject(gen, _exemplar(scene, 1), go_id, name, tr_id)
-    tr_text = new_transform(gen, _exemplar(scene, 4), tr_id, go_id, father,
-                            order if gen.root_order else None)
+    tr_text = new_transform(
+        gen, _exemplar(scene, 4), tr_id, go_id, father, order if gen.root_order else None
+    )
     index = None if gen.is_scene else _prefab_go_slot(scene, go_id)
     scene._insert(Doc(1, go_id, False, go_text), index)
     scene._insert(Doc(4, tr_id, False, tr_text), None if index is None else index + 1)
@@ -167,8 +200,12 @@ def _append_scene_root(scene: SceneDocument, file_id: int) -> None:
     scene._touch(roots_doc)
 
 
-def ensure_component(scene: SceneDocument, go: GameObject | str, script: ScriptRef,
-                     fields: Sequence[tuple[str, FieldValue]]) -> Component:
+def ensure_component(
+    scene: SceneDocument,
+    go: GameObject | str,
+    script: ScriptRef,
+    fields: Sequence[tuple[str, FieldValue]],
+) -> Component:
     target = scene._go(go)
     _require_editable(scene, target)
     existing = scene.find_component(target, script.guid, script.file_id)
@@ -177,10 +214,12 @@ def ensure_component(scene: SceneDocument, go: GameObject | str, script: ScriptR
         return scene.component(existing.file_id)
     go_doc = scene._doc_of(target.file_id)
     lines = [line for name, value in fields for line in _emit(scene, name, value)]
-    comp_id = stable_file_id(("MonoBehaviour", target.path, script.guid, str(script.file_id)),
-                             _Taken(scene._by_id))
-    text = new_monobehaviour(scene.generation, _exemplar(scene, 114), comp_id, target.file_id,
-                             script, lines)
+    comp_id = stable_file_id(
+        ("MonoBehaviour", target.path, script.guid, str(script.file_id)), _Taken(scene._by_id)
+    )
+    text = new_monobehaviour(
+        scene.generation, _exemplar(scene, 114), comp_id, target.file_id, script, lines
+    )
     index = None if scene.generation.is_scene else _block_end(scene, go_doc)
     scene._insert(Doc(114, comp_id, False, text), index)
     T.append_list_item(go_doc, "m_Component", component_item(scene.generation, 114, comp_id))
@@ -201,8 +240,12 @@ def set_fields(scene: SceneDocument, doc: Doc, fields: Sequence[tuple[str, Field
         else:
             before = [n for n in order[:position] if F.field_span(doc, n) is not None]
             after = [n for n in order[position + 1 :] if F.field_span(doc, n) is not None]
-            T.insert_field(doc, lines, after=before[-1] if before else None,
-                           before=after[0] if after and not before else None)
+            T.insert_field(
+                doc,
+                lines,
+                after=before[-1] if before else None,
+                before=after[0] if after and not before else None,
+            )
         changed = True
     if changed:
         scene._touch(doc)
@@ -226,4 +269,3 @@ def remove_component(scene: SceneDocument, file_id: int) -> bool:
             T.set_text(other, other.text.replace(needle, "{fileID: 0}"))
             scene._touch(other)
     return True
-

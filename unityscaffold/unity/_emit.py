@@ -41,7 +41,9 @@ def emit_field(
     pad = " " * indent
     if isinstance(value, str):
         text = format_string(
-            value, column=indent + len(key) + 2, indent=indent + 2,
+            value,
+            column=indent + len(key) + 2,
+            indent=indent + 2,
             quote_trailing_bracket=quote_trailing_bracket,
         )
         return f"{pad}{key}: {text}".split("\n")
@@ -53,8 +55,9 @@ def emit_field(
             return [f"{pad}{key}: {{}}"]
         lines = [f"{pad}{key}:"]
         for sub_key, sub_value in value.items():
-            lines += emit_field(sub_key, sub_value, indent + 2,
-                                quote_trailing_bracket=quote_trailing_bracket)
+            lines += emit_field(
+                sub_key, sub_value, indent + 2, quote_trailing_bracket=quote_trailing_bracket
+            )
         return lines
     if isinstance(value, Sequence):
         if not value:
@@ -69,8 +72,12 @@ def emit_field(
 def _emit_item(item: FieldValue, indent: int, quote_trailing_bracket: bool) -> list[str]:
     pad = " " * indent
     if isinstance(item, str):
-        text = format_string(item, column=indent + 2, indent=indent + 2,
-                             quote_trailing_bracket=quote_trailing_bracket)
+        text = format_string(
+            item,
+            column=indent + 2,
+            indent=indent + 2,
+            quote_trailing_bracket=quote_trailing_bracket,
+        )
         return f"{pad}- {text}".rstrip(" ").split("\n") if text else [f"{pad}- "]
     flow = flow_text(item)
     if flow is not None:
@@ -78,9 +85,10 @@ def _emit_item(item: FieldValue, indent: int, quote_trailing_bracket: bool) -> l
     if isinstance(item, Mapping) and item:
         lines: list[str] = []
         for sub_key, sub_value in item.items():
-            lines += emit_field(sub_key, sub_value, indent + 2,
-                                quote_trailing_bracket=quote_trailing_bracket)
-        return [f"{pad}- {lines[0][indent + 2:]}", *lines[1:]]
+            lines += emit_field(
+                sub_key, sub_value, indent + 2, quote_trailing_bracket=quote_trailing_bracket
+            )
+        return [f"{pad}- {lines[0][indent + 2 :]}", *lines[1:]]
     raise TypeError(f"cannot serialize a list item of type {type(item).__name__}")
 
 
@@ -101,22 +109,35 @@ def _equals(stored: object, value: FieldValue) -> bool:
     if isinstance(value, str):
         return stored == value or (stored is None and value == "")
     if isinstance(value, ObjectRef):
-        return isinstance(stored, dict) and set(stored) == {"fileID"} and int(stored["fileID"]) == value.file_id
+        return (
+            isinstance(stored, dict)
+            and set(stored) == {"fileID"}
+            and int(stored["fileID"]) == value.file_id
+        )
     if isinstance(value, AssetRef):
-        return isinstance(stored, dict) and set(stored) == {"fileID", "guid", "type"} and (
-            int(stored["fileID"]), stored["guid"], int(stored["type"])
-        ) == (value.file_id, value.guid, value.type)
+        return (
+            isinstance(stored, dict)
+            and set(stored) == {"fileID", "guid", "type"}
+            and (int(stored["fileID"]), stored["guid"], int(stored["type"]))
+            == (value.file_id, value.guid, value.type)
+        )
     if isinstance(value, InlineMap):
-        return isinstance(stored, dict) and list(stored) == [k for k, _ in value.items] and all(
-            _equals(stored[k], v) for k, v in value.items
+        return (
+            isinstance(stored, dict)
+            and list(stored) == [k for k, _ in value.items]
+            and all(_equals(stored[k], v) for k, v in value.items)
         )
     if isinstance(value, Mapping):
-        return isinstance(stored, dict) and list(stored) == list(value) and all(
-            _equals(stored[k], v) for k, v in value.items()
+        return (
+            isinstance(stored, dict)
+            and list(stored) == list(value)
+            and all(_equals(stored[k], v) for k, v in value.items())
         )
     if isinstance(value, Sequence):
-        return isinstance(stored, list) and len(stored) == len(value) and all(
-            _equals(s, v) for s, v in zip(stored, value)
+        return (
+            isinstance(stored, list)
+            and len(stored) == len(value)
+            and all(_equals(s, v) for s, v in zip(stored, value, strict=True))
         )
     return False
 

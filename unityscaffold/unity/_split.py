@@ -50,7 +50,9 @@ class SplitFile:
     crlf: bool
 
 
-def _error(path: str, text: str, offset: int, message: str, hint: str | None = None) -> LocatedError:
+def _error(
+    path: str, text: str, offset: int, message: str, hint: str | None = None
+) -> LocatedError:
     line = text.count("\n", 0, offset) + 1
     start = text.rfind("\n", 0, offset) + 1
     end = text.find("\n", offset)
@@ -71,7 +73,10 @@ def split_text(text: str, path: str) -> SplitFile:
         text = text.replace("\r\n", "\n")
     if not text.startswith("%YAML"):
         raise _error(
-            path, text, 0, "not a Unity YAML file: it does not start with '%YAML'",
+            path,
+            text,
+            0,
+            "not a Unity YAML file: it does not start with '%YAML'",
             hint="Unity writes text scenes only with Asset Serialization Mode 'Force Text'",
         )
     pieces = text.split(_SEPARATOR)
@@ -81,8 +86,13 @@ def split_text(text: str, path: str) -> SplitFile:
         raise _error(path, text, len(text), "no '--- !u!<class> &<fileID>' document in the file")
     prolog = pieces[0] + "\n"
     if any(line and not line.startswith("%") for line in pieces[0].split("\n")):
-        raise _error(path, text, 0, "unexpected text before the first document",
-                     hint="only %YAML/%TAG directives may precede the first '--- !u!' header")
+        raise _error(
+            path,
+            text,
+            0,
+            "unexpected text before the first document",
+            hint="only %YAML/%TAG directives may precede the first '--- !u!' header",
+        )
     docs = []
     last = len(pieces) - 1
     for index in range(1, len(pieces)):
@@ -97,9 +107,16 @@ def split_text(text: str, path: str) -> SplitFile:
 
 
 def _malformed(text: str, path: str) -> LocatedError:
-    bad = next(m.start() for m in _ANY_HEADER_RE.finditer(text) if not HEADER_RE.match(text, m.start()))
-    return _error(path, text, bad, "malformed document header",
-                  hint="expected '--- !u!<classID> &<fileID>' optionally followed by ' stripped'")
+    bad = next(
+        m.start() for m in _ANY_HEADER_RE.finditer(text) if not HEADER_RE.match(text, m.start())
+    )
+    return _error(
+        path,
+        text,
+        bad,
+        "malformed document header",
+        hint="expected '--- !u!<classID> &<fileID>' optionally followed by ' stripped'",
+    )
 
 
 def _bad_document(text: str, path: str, pieces: list[str], index: int) -> LocatedError:
@@ -107,16 +124,25 @@ def _bad_document(text: str, path: str, pieces: list[str], index: int) -> Locate
     header = HEADER_RE.match(text, offset)
     if header is None:
         return _malformed(text, path)
-    return _error(path, text, min(header.end() + 1, len(text) - 1),
-                  f"document {header.group(0)} has no 'TypeName:' line",
-                  hint="the file may be truncated or edited by hand")
+    return _error(
+        path,
+        text,
+        min(header.end() + 1, len(text) - 1),
+        f"document {header.group(0)} has no 'TypeName:' line",
+        hint="the file may be truncated or edited by hand",
+    )
 
 
 def _check_complete(text: str, path: str, docs: list[Doc]) -> None:
     truncated_hint = "the file looks truncated; restore it from version control"
     if not text.endswith("\n"):
-        raise _error(path, text, len(text) - 1, "the file does not end with a line break",
-                     hint=truncated_hint)
+        raise _error(
+            path,
+            text,
+            len(text) - 1,
+            "the file does not end with a line break",
+            hint=truncated_hint,
+        )
     last = docs[-1]
     body = last.text[last.text.index("\n") + 1 :]
     if len(body) > 65536:
@@ -127,9 +153,13 @@ def _check_complete(text: str, path: str, docs: list[Doc]) -> None:
     try:
         yaml.load(body, Loader=_BaseLoader)
     except yaml.YAMLError as exc:
-        raise _error(path, text, len(text) - len(last.text),
-                     f"the last document {last.header} is not valid YAML ({_first_line(exc)})",
-                     hint=truncated_hint) from None
+        raise _error(
+            path,
+            text,
+            len(text) - len(last.text),
+            f"the last document {last.header} is not valid YAML ({_first_line(exc)})",
+            hint=truncated_hint,
+        ) from None
 
 
 def _first_line(exc: Exception) -> str:

@@ -20,11 +20,25 @@ __all__ = ["component_item", "new_gameobject", "new_monobehaviour", "new_transfo
 _NULL = "{fileID: 0}"
 _MODERN = ["m_ObjectHideFlags", "m_CorrespondingSourceObject", "m_PrefabInstance", "m_PrefabAsset"]
 _LEGACY = ["m_ObjectHideFlags", "m_PrefabParentObject", "m_PrefabInternal"]
-_GO_TAIL = ["m_Component", "m_Layer", "m_Name", "m_TagString", "m_Icon", "m_NavMeshLayer",
-            "m_StaticEditorFlags", "m_IsActive"]
+_GO_TAIL = [
+    "m_Component",
+    "m_Layer",
+    "m_Name",
+    "m_TagString",
+    "m_Icon",
+    "m_NavMeshLayer",
+    "m_StaticEditorFlags",
+    "m_IsActive",
+]
 _TRANSFORM_POSE = ["m_LocalRotation", "m_LocalPosition", "m_LocalScale"]
-_MB_TAIL = ["m_GameObject", "m_Enabled", "m_EditorHideFlags", "m_Script", "m_Name",
-            "m_EditorClassIdentifier"]
+_MB_TAIL = [
+    "m_GameObject",
+    "m_Enabled",
+    "m_EditorHideFlags",
+    "m_Script",
+    "m_Name",
+    "m_EditorClassIdentifier",
+]
 _COMMON = {
     "m_ObjectHideFlags": "0",
     "m_CorrespondingSourceObject": _NULL,
@@ -41,14 +55,35 @@ def _builtin_layout(kind: str, gen: Generation) -> list[str]:
     if kind == "MonoBehaviour":
         return [*head, *_MB_TAIL]
     if gen.root_order:
-        return [*head, "m_GameObject", *_TRANSFORM_POSE, "m_Children", "m_Father", "m_RootOrder",
-                "m_LocalEulerAnglesHint"]
-    return [*head, "m_GameObject", "serializedVersion", *_TRANSFORM_POSE,
-            "m_ConstrainProportionsScale", "m_Children", "m_Father", "m_LocalEulerAnglesHint"]
+        return [
+            *head,
+            "m_GameObject",
+            *_TRANSFORM_POSE,
+            "m_Children",
+            "m_Father",
+            "m_RootOrder",
+            "m_LocalEulerAnglesHint",
+        ]
+    return [
+        *head,
+        "m_GameObject",
+        "serializedVersion",
+        *_TRANSFORM_POSE,
+        "m_ConstrainProportionsScale",
+        "m_Children",
+        "m_Father",
+        "m_LocalEulerAnglesHint",
+    ]
 
 
-def _render(header: str, kind: str, gen: Generation, exemplar: Doc | None,
-            values: Mapping[str, str | list[str]], stop_after: str | None = None) -> str:
+def _render(
+    header: str,
+    kind: str,
+    gen: Generation,
+    exemplar: Doc | None,
+    values: Mapping[str, str | list[str]],
+    stop_after: str | None = None,
+) -> str:
     layout = F.field_names(exemplar) if exemplar is not None else _builtin_layout(kind, gen)
     if stop_after is not None and stop_after in layout:
         layout = layout[: layout.index(stop_after) + 1]
@@ -76,8 +111,9 @@ def component_item(gen: Generation, class_id: int, file_id: int) -> str:
     return f"  - {key}: {{fileID: {file_id}}}"
 
 
-def new_gameobject(gen: Generation, exemplar: Doc | None, file_id: int, name: str,
-                   transform_id: int) -> str:
+def new_gameobject(
+    gen: Generation, exemplar: Doc | None, file_id: int, name: str, transform_id: int
+) -> str:
     version = "6" if gen.modern_prefab_fields else "4" if gen.classid_component_items else "5"
     values: dict[str, str | list[str]] = {
         **_COMMON,
@@ -96,8 +132,14 @@ def new_gameobject(gen: Generation, exemplar: Doc | None, file_id: int, name: st
     return _render(f"--- !u!1 &{file_id}", "GameObject", gen, exemplar, values)
 
 
-def new_transform(gen: Generation, exemplar: Doc | None, file_id: int, gameobject_id: int,
-                  father_id: int, root_order: int | None) -> str:
+def new_transform(
+    gen: Generation,
+    exemplar: Doc | None,
+    file_id: int,
+    gameobject_id: int,
+    father_id: int,
+    root_order: int | None,
+) -> str:
     values: dict[str, str | list[str]] = {
         **_COMMON,
         "m_PrefabInternal": _prefab_internal(exemplar),
@@ -125,8 +167,14 @@ def class_identifier(gen: Generation, script: ScriptRef) -> str:
     return f"{script.assembly or 'Assembly-CSharp'}::{qualified}"
 
 
-def new_monobehaviour(gen: Generation, exemplar: Doc | None, file_id: int, gameobject_id: int,
-                      script: ScriptRef, field_lines: Sequence[str]) -> str:
+def new_monobehaviour(
+    gen: Generation,
+    exemplar: Doc | None,
+    file_id: int,
+    gameobject_id: int,
+    script: ScriptRef,
+    field_lines: Sequence[str],
+) -> str:
     values: dict[str, str | list[str]] = {
         **_COMMON,
         "m_PrefabInternal": _prefab_internal(exemplar),

@@ -34,8 +34,9 @@ def replace_field(doc: Doc, key: str, lines: Sequence[str]) -> None:
     set_text(doc, doc.text[: span[0]] + _lines(lines) + doc.text[span[1] :])
 
 
-def insert_field(doc: Doc, lines: Sequence[str], *, after: str | None = None,
-                 before: str | None = None) -> None:
+def insert_field(
+    doc: Doc, lines: Sequence[str], *, after: str | None = None, before: str | None = None
+) -> None:
     """Insert ``lines`` after the span of ``after``, before ``before``, or at the end."""
     if after is not None:
         at = F.spans(doc)[after][1]

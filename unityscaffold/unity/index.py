@@ -171,7 +171,9 @@ def _link(nodes: dict[int, Node], owner: dict[int, int], by_id: Mapping[int, Doc
     for node in nodes.values():
         if node.transform_id is None or node.transform_id not in by_id:
             continue
-        listed = [owner[c] for c in F.list_refs(by_id[node.transform_id], "m_Children") if c in owner]
+        listed = [
+            owner[c] for c in F.list_refs(by_id[node.transform_id], "m_Children") if c in owner
+        ]
         node.children = [c for c in dict.fromkeys(listed) if c in nodes]
     for node in nodes.values():  # children that point up but are not listed: keep them visible
         if node.parent is not None and node.file_id not in nodes[node.parent].children:

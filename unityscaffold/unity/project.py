@@ -79,16 +79,20 @@ def script_index(root: str | Path) -> dict[str, ScriptInfo]:
     return found
 
 
-def find_script(root: str | Path, class_name: str, *, index: dict[str, ScriptInfo] | None = None
-                ) -> ScriptRef | None:
+def find_script(
+    root: str | Path, class_name: str, *, index: dict[str, ScriptInfo] | None = None
+) -> ScriptRef | None:
     """The script whose file is ``<class_name>.cs``; a UserError if several files match."""
     scripts = index if index is not None else script_index(root)
-    matches = sorted((s for s in scripts.values() if s.class_name == class_name),
-                     key=lambda s: s.path)
+    matches = sorted(
+        (s for s in scripts.values() if s.class_name == class_name), key=lambda s: s.path
+    )
     if len(matches) > 1:
         listed = ", ".join(s.path for s in matches)
-        raise UserError(f"{len(matches)} scripts named {class_name}.cs: {listed}",
-                        hint="pass the script's path instead of its class name")
+        raise UserError(
+            f"{len(matches)} scripts named {class_name}.cs: {listed}",
+            hint="pass the script's path instead of its class name",
+        )
     return ScriptRef(matches[0].guid, class_name=class_name) if matches else None
 
 
@@ -99,6 +103,8 @@ def script_ref_for_file(path: str | Path) -> ScriptRef:
         raise UserError(f"{script} is not a C# script (.cs)")
     guid = read_meta_guid(script.with_name(script.name + ".meta"))
     if guid is None:
-        raise UserError(f"{script} has no .meta file with a GUID",
-                        hint="let Unity import the script once, or generate it with scaffold apply")
+        raise UserError(
+            f"{script} has no .meta file with a GUID",
+            hint="let Unity import the script once, or generate it with scaffold apply",
+        )
     return ScriptRef(guid, class_name=script.stem)

@@ -9,15 +9,15 @@ GameObject + script, and fileIDs of new objects derive from stable names.
 from __future__ import annotations
 
 import bisect
+import itertools
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
 from unityscaffold.unity import _fields as F
-from unityscaffold.unity import _textops as T
 from unityscaffold.unity._split import Doc, split_text
 from unityscaffold.unity.atomic import write_if_changed
-from unityscaffold.unity.generation import TRANSFORM_CLASSES, Generation, detect
+from unityscaffold.unity.generation import Generation, detect
 from unityscaffold.unity.index import Component, GameObject, Hierarchy, build_hierarchy
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.validate import validate_docs
@@ -51,7 +51,7 @@ class SceneDocument:
             self._by_id.setdefault(doc.file_id, doc)
         self._changed: set[int] = set()
         self._hierarchy: Hierarchy | None = None
-        self._sorted = all(a.file_id <= b.file_id for a, b in zip(docs, docs[1:]))
+        self._sorted = all(a.file_id <= b.file_id for a, b in itertools.pairwise(docs))
         self.generation: Generation = detect(docs, path)
 
     # ----- loading and output -----------------------------------------------------------------
@@ -164,11 +164,16 @@ class SceneDocument:
         owner = F.ref_value(doc, "m_GameObject") or 0
         return Component(doc.file_id, doc.class_id, doc.type_name, owner, ref, doc.stripped)
 
-    def find_component(self, go: GameObject | str, script_guid: str,
-                       script_file_id: int = MONOSCRIPT_FILE_ID) -> Component | None:
+    def find_component(
+        self, go: GameObject | str, script_guid: str, script_file_id: int = MONOSCRIPT_FILE_ID
+    ) -> Component | None:
         """The first component of ``go`` running that script, or None."""
         for comp in self.components_of(go):
-            if comp.script and comp.script.guid == script_guid and comp.script.file_id == script_file_id:
+            if (
+                comp.script
+                and comp.script.guid == script_guid
+                and comp.script.file_id == script_file_id
+            ):
                 return comp
         return None
 
@@ -184,8 +189,9 @@ class SceneDocument:
 
         return ensure_gameobject(self, path, create)
 
-    def ensure_component(self, go: GameObject | str, script: ScriptRef, fields: Fields = ()
-                         ) -> Component:
+    def ensure_component(
+        self, go: GameObject | str, script: ScriptRef, fields: Fields = ()
+    ) -> Component:
         """Attach ``script`` to ``go`` or update the one already there; idempotent.
 
         ``fields`` are written in the given order on a new component; on an existing one,
@@ -214,9 +220,17 @@ class SceneDocument:
     def _view(self, node_id: int) -> GameObject:
         node = self.hierarchy.nodes[node_id]
         doc = self._by_id.get(node_id)
-        components = tuple(F.list_refs(doc, "m_Component")) if doc is not None and doc.class_id == 1 else ()
-        return GameObject(node_id, node.name, self.hierarchy.paths[node_id], node.transform_id,
-                          components, node.prefab_instance_id)
+        components = (
+            tuple(F.list_refs(doc, "m_Component")) if doc is not None and doc.class_id == 1 else ()
+        )
+        return GameObject(
+            node_id,
+            node.name,
+            self.hierarchy.paths[node_id],
+            node.transform_id,
+            components,
+            node.prefab_instance_id,
+        )
 
     def _go(self, go: GameObject | str) -> GameObject:
         if isinstance(go, str):
@@ -247,8 +261,10 @@ class SceneDocument:
         if len(found) == 1:
             return found[0]
         listed = ", ".join(f"'{self.hierarchy.paths[i]}' (&{i})" for i in found)
-        raise UserError(f"{self.path}: {len(found)} GameObjects match '{path}': {listed}",
-                        hint="rename one of them in Unity so the path is unique")
+        raise UserError(
+            f"{self.path}: {len(found)} GameObjects match '{path}': {listed}",
+            hint="rename one of them in Unity so the path is unique",
+        )
 
     def _missing_error(self, path: str, parents: list[int], level: int) -> UserError:
         names = _split_path(path)
@@ -258,13 +274,16 @@ class SceneDocument:
             return UserError(
                 f"{self.path}: '{prefix}' is a prefab instance; its children live in the prefab "
                 "asset and cannot be addressed here",
-                hint="edit the prefab itself, or unpack the instance in Unity")
+                hint="edit the prefab itself, or unpack the instance in Unity",
+            )
         pool = parents or [None]
         existing = sorted({n for p in pool for n in self.hierarchy.names_under(p)})
         where = f"under '{prefix}'" if prefix else "at the root"
         shown = ", ".join(repr(n) for n in existing[:30]) or "none"
-        return UserError(f"{self.path}: no GameObject named '{names[level]}' {where}; "
-                         f"names there: {shown}", hint="use --create to create it")
+        return UserError(
+            f"{self.path}: no GameObject named '{names[level]}' {where}; names there: {shown}",
+            hint="use --create to create it",
+        )
 
     def _insert(self, doc: Doc, index: int | None = None) -> None:
         """Insert a new document at ``index``, or by fileID order as Unity sorts scenes."""
@@ -272,8 +291,10 @@ class SceneDocument:
             if self._sorted:
                 index = bisect.bisect_right(self._docs, doc.file_id, key=lambda d: d.file_id)
             else:
-                index = next((i for i, d in enumerate(self._docs) if d.file_id > doc.file_id),
-                             len(self._docs))
+                index = next(
+                    (i for i, d in enumerate(self._docs) if d.file_id > doc.file_id),
+                    len(self._docs),
+                )
         else:
             self._sorted = False
         self._docs.insert(index, doc)

@@ -46,8 +46,9 @@ def component_label(comp: Component, script_names: Mapping[str, str]) -> str:
     return comp.script.guid
 
 
-def parse_value(text: str, scene: SceneDocument, script_names: Mapping[str, str] | None = None
-                ) -> FieldValue:
+def parse_value(
+    text: str, scene: SceneDocument, script_names: Mapping[str, str] | None = None
+) -> FieldValue:
     """Turn VALUE text into a typed field value, resolving ``@`` references in ``scene``."""
     names = script_names or {}
     if text.startswith("@"):
@@ -56,8 +57,10 @@ def parse_value(text: str, scene: SceneDocument, script_names: Mapping[str, str]
         node = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.YAMLError as exc:
         first = str(exc).strip().split("\n")[0]
-        raise UserError(f"cannot read value '{text}': {first}",
-                        hint="quote strings that contain YAML syntax: 'a: b'") from None
+        raise UserError(
+            f"cannot read value '{text}': {first}",
+            hint="quote strings that contain YAML syntax: 'a: b'",
+        ) from None
     return "" if node is None else _node(node, scene, names)
 
 
@@ -86,8 +89,9 @@ def _int(value: object) -> int:
     return value
 
 
-def _scalar(text: str, style: str | None, scene: SceneDocument, names: Mapping[str, str]
-            ) -> FieldValue:
+def _scalar(
+    text: str, style: str | None, scene: SceneDocument, names: Mapping[str, str]
+) -> FieldValue:
     if style is not None:  # quoted: always a string, or an @reference
         return _reference(text, scene, names) if text.startswith("@") else text
     if _INT_RE.fullmatch(text):
@@ -113,5 +117,7 @@ def _reference(text: str, scene: SceneDocument, names: Mapping[str, str]) -> Fie
     present = ", ".join(sorted({component_label(c, names) for c in comps})) or "none"
     if not matches:
         raise UserError(f"'{go.path}' has no component '{wanted}'; it has: {present}")
-    raise UserError(f"'{go.path}' has {len(matches)} components '{wanted}'",
-                    hint="refer to one by {fileID: N}: " + ", ".join(str(c.file_id) for c in matches))
+    raise UserError(
+        f"'{go.path}' has {len(matches)} components '{wanted}'",
+        hint="refer to one by {fileID: N}: " + ", ".join(str(c.file_id) for c in matches),
+    )

@@ -43,11 +43,14 @@ class _Locator:
             line += doc.text.count("\n", 0, span[0])
             source = doc.text[span[0] : doc.text.index("\n", span[0])]
         where = f"{doc.header}: {key}" if key else doc.header
-        return Diagnostic(SourceLocation(self.path, line, 0, source), f"{where}: {message}", hint=hint)
+        return Diagnostic(
+            SourceLocation(self.path, line, 0, source), f"{where}: {message}", hint=hint
+        )
 
 
-def validate_docs(path: str, prolog: str, docs: Sequence[Doc], changed: Collection[int] = ()
-                  ) -> list[Diagnostic]:
+def validate_docs(
+    path: str, prolog: str, docs: Sequence[Doc], changed: Collection[int] = ()
+) -> list[Diagnostic]:
     """All problems found, in file order; an empty list means the file may be written."""
     loc = _Locator(path, prolog, docs)
     by_id: dict[int, Doc] = {}
@@ -55,8 +58,14 @@ def validate_docs(path: str, prolog: str, docs: Sequence[Doc], changed: Collecti
     counts = Counter(d.file_id for d in docs)
     for doc in docs:
         if counts[doc.file_id] > 1 and doc.file_id in by_id:
-            found.append(loc.at(doc, None, f"fileID {doc.file_id} is used by more than one object",
-                                hint="every object in a file needs its own fileID"))
+            found.append(
+                loc.at(
+                    doc,
+                    None,
+                    f"fileID {doc.file_id} is used by more than one object",
+                    hint="every object in a file needs its own fileID",
+                )
+            )
         by_id.setdefault(doc.file_id, doc)
     referenced = {int(m) for doc in docs for m in F.LOCAL_REF_RE.findall(doc.text)}
     # reading every reference once is cheap; finding where a dangling one sits is not, so only
@@ -83,8 +92,13 @@ def _dangling(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic
     for match in F.local_refs(doc.text):
         target = int(match.group(1))
         if target != 0 and target not in by_id:
-            out.append(loc.at(doc, _key_at(doc, match.start()),
-                              f"refers to fileID {target}, which is not in the file"))
+            out.append(
+                loc.at(
+                    doc,
+                    _key_at(doc, match.start()),
+                    f"refers to fileID {target}, which is not in the file",
+                )
+            )
     return out
 
 
@@ -121,16 +135,30 @@ def _gameobjects(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Di
         doc = by_id[go_id]
         for ref in components:
             if ref in links.owner and links.owner[ref] != go_id:
-                out.append(loc.at(doc, "m_Component", f"lists {by_id[ref].header}, whose "
-                                  "m_GameObject is not this GameObject"))
-        transforms = [c for c in components if c in by_id and by_id[c].class_id in TRANSFORM_CLASSES]
+                out.append(
+                    loc.at(
+                        doc,
+                        "m_Component",
+                        f"lists {by_id[ref].header}, whose m_GameObject is not this GameObject",
+                    )
+                )
+        transforms = [
+            c for c in components if c in by_id and by_id[c].class_id in TRANSFORM_CLASSES
+        ]
         if len(transforms) != 1 or components[0] != transforms[0]:
-            out.append(loc.at(doc, "m_Component", "a GameObject needs exactly one Transform, listed first"))
+            out.append(
+                loc.at(doc, "m_Component", "a GameObject needs exactly one Transform, listed first")
+            )
     for comp_id, go_id in links.owner.items():
         listed = links.components.get(go_id)
         if listed is not None and comp_id not in listed:
-            out.append(loc.at(by_id[comp_id], "m_GameObject", f"points at {by_id[go_id].header}, "
-                              "whose m_Component does not list it"))
+            out.append(
+                loc.at(
+                    by_id[comp_id],
+                    "m_GameObject",
+                    f"points at {by_id[go_id].header}, whose m_Component does not list it",
+                )
+            )
     return out
 
 
@@ -139,13 +167,23 @@ def _transforms(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Dia
     for tr_id, father in links.father.items():
         siblings = links.children.get(father)
         if siblings is not None and tr_id not in siblings:
-            out.append(loc.at(by_id[tr_id], "m_Father", f"points at {by_id[father].header}, "
-                              "whose m_Children does not list it"))
+            out.append(
+                loc.at(
+                    by_id[tr_id],
+                    "m_Father",
+                    f"points at {by_id[father].header}, whose m_Children does not list it",
+                )
+            )
     for tr_id, children in links.children.items():
         for child in children:
             if child in links.father and links.father[child] != tr_id:
-                out.append(loc.at(by_id[tr_id], "m_Children", f"lists {by_id[child].header}, "
-                                  "whose m_Father is not this Transform"))
+                out.append(
+                    loc.at(
+                        by_id[tr_id],
+                        "m_Children",
+                        f"lists {by_id[child].header}, whose m_Father is not this Transform",
+                    )
+                )
     return out
 
 
@@ -156,16 +194,23 @@ def _scene_roots(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> l
     listed = F.list_refs(scene_roots[-1], "m_Roots")
     expected = set()
     for doc in docs:
-        if doc.class_id in TRANSFORM_CLASSES and not doc.stripped and not F.ref_value(doc, "m_Father"):
-            expected.add(doc.file_id)
-        elif doc.type_name == "PrefabInstance" and "\n    m_TransformParent: {fileID: 0}\n" in doc.text:
+        if (
+            doc.class_id in TRANSFORM_CLASSES
+            and not doc.stripped
+            and not F.ref_value(doc, "m_Father")
+        ) or (
+            doc.type_name == "PrefabInstance"
+            and "\n    m_TransformParent: {fileID: 0}\n" in doc.text
+        ):
             expected.add(doc.file_id)
     if set(listed) == expected and len(listed) == len(expected):
         return []
     parts = [f"omits root &{i}" for i in sorted(expected - set(listed))]
     parts += [f"lists &{i}, which is not a root" for i in sorted(set(listed) - expected)]
     parts += [f"lists &{i} twice" for i, n in sorted(Counter(listed).items()) if n > 1]
-    return [loc.at(scene_roots[-1], "m_Roots", "does not match the scene's roots: " + "; ".join(parts))]
+    return [
+        loc.at(scene_roots[-1], "m_Roots", "does not match the scene's roots: " + "; ".join(parts))
+    ]
 
 
 def _parses(loc: _Locator, doc: Doc) -> list[Diagnostic]:

@@ -12,7 +12,7 @@ import re
 import struct
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TypeAlias, Union
+from typing import TypeAlias
 
 from unityscaffold.unity._md4 import md4
 
@@ -71,18 +71,18 @@ class InlineMap:
         return cls(tuple(items.items()))
 
 
-FieldValue: TypeAlias = Union[
-    bool,
-    int,
-    float,
-    str,
-    Enum,
-    ObjectRef,
-    AssetRef,
-    InlineMap,
-    Sequence["FieldValue"],
-    Mapping[str, "FieldValue"],
-]
+FieldValue: TypeAlias = (
+    bool
+    | int
+    | float
+    | str
+    | Enum
+    | ObjectRef
+    | AssetRef
+    | InlineMap
+    | Sequence["FieldValue"]
+    | Mapping[str, "FieldValue"]
+)
 
 
 @dataclass(frozen=True, slots=True)
