@@ -6,11 +6,11 @@ session; each compile returns mcs's output so tests can assert on errors and war
 
 from __future__ import annotations
 
-import subprocess
-from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+
+from csharp import MCS_FLAGS, Compiled, compile_cs  # noqa: F401 (re-exported to tests)
 
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.interfaces.model import Dialect
@@ -20,22 +20,6 @@ HERE = Path(__file__).resolve().parent
 DATA = HERE / "data"
 STUB = HERE / "stubs" / "RosSharpStub.cs"
 GOLDEN = HERE / "golden"
-# mcs 6.8 accepts C# up to 7.2: generated code must stay within what Unity 2019+ compiles.
-MCS_FLAGS = ("-langversion:7.2", "-target:library", "-warnaserror+", "-warn:4", "-nowarn:1591",
-             "-nologo")
-
-
-@dataclass(frozen=True)
-class Compiled:
-    returncode: int
-    output: str
-    assembly: Path
-
-    def assert_clean(self) -> None:
-        assert self.returncode == 0, self.output
-        assert "warning" not in self.output, self.output
-
-
 def write_tree(generation: Generation, out: Path) -> list[Path]:
     paths = []
     for file in generation.files:
@@ -44,17 +28,6 @@ def write_tree(generation: Generation, out: Path) -> list[Path]:
         path.write_text(file.text, encoding="utf-8", newline="\n")
         paths.append(path)
     return paths
-
-
-def compile_cs(mcs: str, sources: list[Path], out: Path, *, ros2: bool,
-               references: tuple[Path, ...] = ()) -> Compiled:
-    args = [mcs, *MCS_FLAGS, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
-    if ros2:
-        args.append("-define:ROS2")
-    args += [f"-r:{r}" for r in references]
-    args += [str(s) for s in sources]
-    done = subprocess.run(args, capture_output=True, text=True, check=False)
-    return Compiled(done.returncode, done.stdout + done.stderr, out)
 
 
 def generate_all(dialect: Dialect, **options: object) -> Generation:

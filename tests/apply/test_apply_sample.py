@@ -1,0 +1,140 @@
+"""``scaffold apply`` end to end on copies of the sample project: idempotence, drift, pruning,
+hand edits, and the committed sample being in sync."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from helpers import run_cli
+
+REPO = Path(__file__).resolve().parents[2]
+SAMPLE = REPO / "sample_project"
+
+
+def snapshot(root: Path) -> dict[str, bytes]:
+    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+@pytest.fixture
+def sample(tmp_path: Path) -> Path:
+    copy = tmp_path / "sample_project"
+    shutil.copytree(SAMPLE, copy)
+    return copy
+
+
+def test_the_committed_sample_matches_its_manifest():
+    before = snapshot(SAMPLE)
+    run = run_cli("apply", "--check", str(SAMPLE / "robot.yaml"))
+    assert run.code == 0, run.out + run.err
+    assert "the project matches the manifest" in run.out
+    assert snapshot(SAMPLE) == before
+
+
+def test_apply_from_clean_writes_what_the_manifest_asks_and_a_second_run_writes_nothing(sample):
+    shutil.rmtree(sample / "unity" / "Assets" / "RosGenerated")
+    (sample / "unity" / "Assets" / "RosGenerated.meta").unlink()
+    (sample / "robot.lock.json").unlink()
+    shutil.copy(REPO / "templates" / "unity_project" / "Assets" / "Scenes" / "Main.unity",
+                sample / "unity" / "Assets" / "Scenes" / "Main.unity")
+    first = run_cli("apply", str(sample / "robot.yaml"))
+    assert first.code == 0, first.err
+    assert "add CmdVelPublisher to Robot" in first.out
+    assert "add ScanSubscriber to Robot/Lidar" in first.out
+    # The same bytes as the committed sample: apply is deterministic.
+    assert snapshot(sample) == snapshot(SAMPLE)
+    after_first = snapshot(sample)
+    second = run_cli("apply", str(sample / "robot.yaml"))
+    assert second.code == 0
+    assert "wrote 0 files, removed 0" in second.out
+    assert snapshot(sample) == after_first
+
+
+def test_check_reports_drift_after_a_manual_scene_edit_and_apply_repairs_it(sample):
+    scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    text = scene.read_text()
+    assert "  Topic: /odom\n" in text
+    scene.write_text(text.replace("  Topic: /odom\n", "  Topic: /odometry\n"))
+    check = run_cli("apply", "--check", str(sample / "robot.yaml"))
+    assert check.code == 1
+    assert "update  Assets/Scenes/Main.unity" in check.out
+    assert "update OdomSubscriber on Robot" in check.out
+    repaired = run_cli("apply", str(sample / "robot.yaml"))
+    assert repaired.code == 0
+    assert scene.read_text() == text
+
+
+def test_check_reports_drift_after_a_manifest_change(sample):
+    manifest = sample / "robot.yaml"
+    manifest.write_text(manifest.read_text().replace("rate: 10", "rate: 20"))
+    check = run_cli("apply", "--check", str(manifest))
+    assert check.code == 1
+    plan = run_cli("plan", str(manifest))
+    assert "-  Rate: 10\n+  Rate: 20\n" in plan.out
+
+
+def test_removing_a_topic_prunes_its_files_and_component_but_not_edited_user_code(sample):
+    manifest = sample / "robot.yaml"
+    scripts = sample / "unity" / "Assets" / "RosGenerated" / "Scripts"
+    user_scan = scripts / "ScanSubscriber.User.cs"
+    user_scan.write_text(user_scan.read_text().replace("// Runs on", "Debug.Log(message); // Runs on"))
+    text = manifest.read_text()
+    for topic in ("/scan", "/odom"):
+        start = text.index(f"  - {{name: {topic},")
+        end = text.index("\n  - ", start + 1)
+        text = text[:start] + text[end + 1:]
+    manifest.write_text(text)
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.err
+    assert not (scripts / "OdomSubscriber.cs").exists()
+    assert not (scripts / "OdomSubscriber.User.cs").exists()  # untouched: removed with its script
+    assert not (scripts / "ScanSubscriber.cs").exists()
+    assert user_scan.exists()  # edited by the user: kept
+    assert "kept Assets/RosGenerated/Scripts/ScanSubscriber.User.cs" in run.out
+    scene = (sample / "unity" / "Assets" / "Scenes" / "Main.unity").read_text()
+    assert "Topic: /odom\n" not in scene and "Topic: /scan\n" not in scene
+    assert "remove topic /odom from Robot" in run.out
+    lock = json.loads((sample / "robot.lock.json").read_text())
+    assert not any("Odom" in path for path in lock["files"])
+    assert run_cli("apply", "--check", str(manifest)).code == 0
+
+
+def test_a_hand_edited_generated_file_stops_apply_until_forced(sample):
+    plumbing = sample / "unity" / "Assets" / "RosGenerated" / "Scripts" / "CmdVelPublisher.cs"
+    original = plumbing.read_text()
+    plumbing.write_text(original.replace("Rate <= 0f", "Rate < 0f"))
+    manifest = sample / "robot.yaml"
+    manifest.write_text(manifest.read_text().replace("rate: 10", "rate: 20"))
+    before = snapshot(sample)
+    run = run_cli("apply", str(manifest))
+    assert run.code == 2
+    assert "edited by hand" in run.err and "CmdVelPublisher.cs" in run.err
+    assert "Traceback" not in run.err
+    assert snapshot(sample) == before
+    forced = run_cli("apply", "--force", str(manifest))
+    assert forced.code == 0, forced.err
+    assert "Rate <= 0f" in plumbing.read_text()
+
+
+def test_dry_run_and_plan_write_nothing(sample):
+    manifest = sample / "robot.yaml"
+    manifest.write_text(manifest.read_text().replace("url: ws://localhost:9090", "url: ws://robot:9090"))
+    before = snapshot(sample)
+    for args in (("plan", str(manifest)), ("apply", "--dry-run", str(manifest))):
+        run = run_cli(*args)
+        assert run.code == 0
+        assert "+  RosBridgeServerUrl: ws://robot:9090" in run.out
+    assert snapshot(sample) == before
+
+
+def test_json_output_for_scripts(sample):
+    manifest = sample / "robot.yaml"
+    manifest.write_text(manifest.read_text().replace("rate: 10", "rate: 5"))
+    run = run_cli("apply", "--check", "--json", str(manifest))
+    assert run.code == 1
+    data = json.loads(run.out)
+    assert data["in_sync"] is False
+    assert {"path": "Assets/Scenes/Main.unity", "action": "update"} in data["files"]
