@@ -210,10 +210,13 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
 
 
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
+    """Where each scene is named: the item's own ``scene`` key, else the top-level one."""
     found: dict[str, SourceLocation] = {}
-    for item in (*manifest.topics, *manifest.services, *manifest.components):
-        found.setdefault(item.scene, item.locations.of("scene"))
-    found.setdefault(manifest.connector.scene, manifest.connector.locations.of("scene"))
+    for item in (manifest.connector, *manifest.topics, *manifest.services, *manifest.components):
+        own = item.locations.has("scene")
+        where = item.locations.of("scene") if own else manifest.locations.of("scene")
+        if own or item.scene not in found:
+            found.setdefault(item.scene, where)
     return found
 
 

@@ -1,0 +1,113 @@
+"""Bad manifests and projects: a located error, exit status 2, no traceback, nothing written."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from helpers import run_cli
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def snapshot(root: Path) -> dict[str, bytes]:
+    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+@pytest.fixture
+def sample(tmp_path: Path) -> Path:
+    copy = tmp_path / "sample_project"
+    shutil.copytree(REPO / "sample_project", copy)
+    return copy
+
+
+def _apply_fails(sample: Path, *fragments: str) -> str:
+    before = snapshot(sample)
+    run = run_cli("apply", str(sample / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert "Traceback" not in run.err
+    for fragment in fragments:
+        assert fragment in run.err, run.err
+    assert snapshot(sample) == before
+    return run.err
+
+
+def _edit(sample: Path, old: str, new: str) -> None:
+    manifest = sample / "robot.yaml"
+    text = manifest.read_text()
+    assert old in text
+    manifest.write_text(text.replace(old, new, 1))
+
+
+def test_unknown_type_points_at_the_manifest_and_suggests(sample):
+    _edit(sample, "type: nav_msgs/Odometry", "type: nav_msgs/Odometri")
+    _apply_fails(sample, "robot.yaml:19:", "unknown ROS 1 type 'nav_msgs/Odometri'",
+                 "did you mean nav_msgs/Odometry")
+
+
+def test_a_service_type_on_a_topic_is_refused(sample):
+    _edit(sample, "type: nav_msgs/Odometry", "type: std_srvs/Trigger")
+    _apply_fails(sample, "robot.yaml:19:", "'std_srvs/Trigger' is a srv, not a message")
+
+
+def test_unknown_key_is_refused_with_the_nearest_key(sample):
+    _edit(sample, "direction: publish, rate: 10", "direction: publish, rat: 10")
+    _apply_fails(sample, "robot.yaml:18:", "did you mean 'rate'")
+
+
+def test_duplicate_topic_is_refused(sample):
+    _edit(sample, "name: /odom,", "name: /cmd_vel,")
+    _apply_fails(sample, "robot.yaml:19:", "/cmd_vel")
+
+
+def test_a_missing_gameobject_with_creation_off_lists_what_exists(sample):
+    _edit(sample, "gameobject: Robot/Lidar}", "gameobject: Robot/Lidar2, create: false}")
+    _apply_fails(sample, "robot.yaml:", "Lidar2", "Lidar")
+
+
+def test_an_output_folder_leaving_the_project_is_refused(sample):
+    _edit(sample, "output: Assets/RosGenerated", "output: Assets/../../outside")
+    _apply_fails(sample, "robot.yaml:7:")
+
+
+def test_an_output_folder_leaving_through_a_symlink_is_refused(sample, tmp_path):
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    (sample / "unity" / "Assets" / "Linked").symlink_to(outside)
+    _edit(sample, "output: Assets/RosGenerated", "output: Assets/Linked/Gen")
+    _apply_fails(sample, "robot.yaml:7:", "symbolic link")
+    assert not any(outside.iterdir())
+
+
+def test_a_binary_scene_is_refused(sample):
+    scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    scene.write_bytes(b"\x00\x01UnityFS binary scene \xff\xfe")
+    _apply_fails(sample, "robot.yaml:8:", "Main.unity")
+
+
+def test_a_missing_scene_is_refused(sample):
+    _edit(sample, "scene: Assets/Scenes/Main.unity", "scene: Assets/Scenes/Nope.unity")
+    _apply_fails(sample, "robot.yaml:8:", "scene Assets/Scenes/Nope.unity not found")
+
+
+def test_a_missing_interfaces_folder_is_refused(sample):
+    shutil.rmtree(sample / "ros_ws")
+    _apply_fails(sample, "robot.yaml:", "interface folder", "does not exist")
+
+
+def test_a_project_without_ros_sharp_says_what_to_install(sample):
+    (sample / "unity" / "Packages" / "manifest.json").write_text('{"dependencies": {}}')
+    _apply_fails(sample, "ROS# is not installed", "com.siemens.ros-sharp")
+
+
+def test_a_malformed_interface_file_is_located(sample):
+    msg = sample / "ros_ws" / "src" / "diffbot_msgs" / "msg" / "WheelState.msg"
+    msg.write_text(msg.read_text() + "float64\tbroken\n")
+    _apply_fails(sample, "WheelState.msg:6:1: error: invalid field declaration")
+
+
+def test_a_corrupt_lock_file_is_refused(sample):
+    (sample / "robot.lock.json").write_text("{not json")
+    _apply_fails(sample, "robot.lock.json is not a valid unityscaffold lock file")
