@@ -2,27 +2,49 @@
 
 from __future__ import annotations
 
+import importlib
 import sys
 
 import typer
 
 from unityscaffold import __version__
-from unityscaffold.cli import apply, discover, msgs, scene
 from unityscaffold.errors import Exit, ScaffoldError
 
-__all__ = ["app", "main"]
+__all__ = ["build_app", "main"]
 
-app = typer.Typer(
-    name="scaffold",
-    help="Generate ROS# message classes, ROS components and scene wiring for Unity.",
-    no_args_is_help=True,
-    add_completion=False,
-    pretty_exceptions_enable=False,
-)
-app.add_typer(msgs.app, name="msgs")
-app.add_typer(scene.app, name="scene")
-apply.register(app)
-discover.register(app)
+# Command name -> the module that defines it. A module is imported only when its command runs
+# (or for the full help), so `scaffold apply` does not pay for discovery's network stack.
+_COMMANDS = {
+    "apply": "apply", "plan": "apply", "init": "apply",
+    "msgs": "msgs", "scene": "scene", "discover": "discover",
+}  # fmt: skip
+_GROUPS = ("msgs", "scene")
+
+
+def _wanted(argv: list[str]) -> list[str]:
+    """The command modules needed for ``argv``: one for a known command, else all."""
+    first = next((arg for arg in argv if not arg.startswith("-")), None)
+    if first in _COMMANDS:
+        return [_COMMANDS[first]]
+    return sorted(set(_COMMANDS.values()))
+
+
+def build_app(argv: list[str]) -> typer.Typer:
+    app = typer.Typer(
+        name="scaffold",
+        help="Generate ROS# message classes, ROS components and scene wiring for Unity.",
+        no_args_is_help=True,
+        add_completion=False,
+        pretty_exceptions_enable=False,
+    )
+    app.callback()(_root)
+    for name in _wanted(argv):
+        module = importlib.import_module(f"unityscaffold.cli.{name}")
+        if name in _GROUPS:
+            app.add_typer(module.app, name=name)
+        else:
+            module.register(app)
+    return app
 
 
 def _version(value: bool) -> None:
@@ -31,7 +53,6 @@ def _version(value: bool) -> None:
         raise typer.Exit()
 
 
-@app.callback()
 def _root(
     version: bool = typer.Option(
         False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
@@ -44,7 +65,8 @@ def main(argv: list[str] | None = None) -> int:
     """Run the CLI; user errors become a message on stderr and exit status 2, never a traceback."""
     try:
         # Without standalone mode click returns a command's exit status instead of exiting.
-        status = app(args=argv, standalone_mode=False)
+        args = sys.argv[1:] if argv is None else argv
+        status = build_app(args)(args=args, standalone_mode=False)
     except ScaffoldError as exc:
         typer.echo(exc.render(), err=True)
         return int(exc.exit_code)
