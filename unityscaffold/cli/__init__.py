@@ -84,7 +84,11 @@ def main(argv: list[str] | None = None) -> int:
         if isinstance(exc, click.ClickException):
             exc.show()
             return int(Exit.USER_ERROR)
-        raise
+        import traceback
+
+        typer.echo("internal error: unityscaffold hit a bug; please report it with this "
+                   "output:\n" + traceback.format_exc(), err=True)
+        return int(Exit.INTERNAL)
     return status if isinstance(status, int) else int(Exit.OK)
 
 

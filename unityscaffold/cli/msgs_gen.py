@@ -8,6 +8,8 @@ from pathlib import Path
 
 import typer
 
+from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
+
 from unityscaffold.apply.files import Action, FileChange, plan_files, write_files
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
@@ -57,12 +59,12 @@ def _check_out_dir(out: Path) -> None:
                         hint="pass a folder with --out")
 
 
-def run(names: list[str], out: Path, ros: int, paths: list[Path], include_shipped: bool,
-        namespace: str | None, everything: bool) -> tuple[Generation, list[FileChange]]:
+def run(names: list[str], out: Path, dialect: Dialect, paths: list[Path], include_shipped: bool,
+        namespace: str | None, everything: bool, *, use_environment: bool = True,
+        ) -> tuple[Generation, list[FileChange]]:
     """Generate and write; returns what was generated and each file's change."""
     _check_out_dir(out)
-    dialect = Dialect(ros)
-    registry = Registry.load(dialect, paths)
+    registry = Registry.load(dialect, paths, use_environment=use_environment)
     roots = resolve_roots(registry, names, everything)
     generation = generate(registry, roots, Options(dialect, include_shipped, namespace))
     changes = plan_files(output_files(generation, out))
@@ -93,9 +95,9 @@ def register(app: typer.Typer) -> None:
                                           help="Types (pkg/Type, pkg/msg/Type) or packages."),
         out: Path = typer.Option(..., "--out", "-o", help="Output folder, e.g. "
                                  "Assets/RosMessages."),
-        ros: int = typer.Option(2, "--ros", min=1, max=2, help="ROS version: 1 or 2."),
-        paths: list[Path] = typer.Option([], "--path", help="Extra folder with ROS packages "
-                                         "(searched first; repeatable)."),
+        ros: int | None = RosOption,
+        paths: list[Path] = PathOption,
+        no_env: bool = NoEnvOption,
         include_shipped: bool = typer.Option(False, "--include-shipped",
                                              help="Also generate types ROS# already ships."),
         namespace: str = typer.Option(None, "--namespace", help="Root namespace instead of "
@@ -103,6 +105,7 @@ def register(app: typer.Typer) -> None:
         everything: bool = typer.Option(False, "--all", help="Generate every type found."),
     ) -> None:
         """Generate ROS# C# classes for types and everything they use."""
-        generation, changes = run(list(names or []), out, ros, list(paths), include_shipped,
-                                  namespace, everything)
+        generation, changes = run(list(names or []), out, dialect_of(ros), list(paths),
+                                  include_shipped, namespace, everything,
+                                  use_environment=not no_env)
         _report(generation, changes, out)
