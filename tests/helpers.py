@@ -10,6 +10,12 @@ from pathlib import Path
 from unityscaffold.cli import main
 
 
+def snapshot(root: Path) -> dict[str, bytes]:
+    """Every file under ``root`` with its bytes, to show that nothing was written."""
+    return {p.relative_to(root).as_posix(): p.read_bytes()
+            for p in sorted(root.rglob("*")) if p.is_file()}
+
+
 def build_tree(root: Path, files: dict[str, str]) -> Path:
     """Write ``{relative path: text}`` under ``root`` and return ``root``."""
     for relative, text in files.items():

@@ -53,20 +53,24 @@ class _Script:
 
 
 @dataclass(frozen=True, slots=True)
-class PublisherScript(_Script):
-    template: ClassVar[str] = "rossharp/scripts/Publisher.cs.jinja"
-    user_template: ClassVar[str] = "rossharp/scripts/PublisherUser.cs.jinja"
+class _TopicScript(_Script):
     topic: str = ""
     message_type: str = ""
+
+    @property
+    def topic_literal(self) -> str:
+        return csharp_string(self.topic)
+
+
+@dataclass(frozen=True, slots=True)
+class PublisherScript(_TopicScript):
+    template: ClassVar[str] = "rossharp/scripts/Publisher.cs.jinja"
+    user_template: ClassVar[str] = "rossharp/scripts/PublisherUser.cs.jinja"
     rate: float = 0.0
 
     @property
     def what(self) -> str:
         return f"publisher of {self.topic}"
-
-    @property
-    def topic_literal(self) -> str:
-        return csharp_string(self.topic)
 
     @property
     def rate_literal(self) -> str:
@@ -82,21 +86,15 @@ class PublisherScript(_Script):
 
 
 @dataclass(frozen=True, slots=True)
-class SubscriberScript(_Script):
+class SubscriberScript(_TopicScript):
     template: ClassVar[str] = "rossharp/scripts/Subscriber.cs.jinja"
     user_template: ClassVar[str] = "rossharp/scripts/SubscriberUser.cs.jinja"
-    topic: str = ""
-    message_type: str = ""
     throttle: int = 0
     queue: int = 1
 
     @property
     def what(self) -> str:
         return f"subscriber of {self.topic}"
-
-    @property
-    def topic_literal(self) -> str:
-        return csharp_string(self.topic)
 
     def serialized_fields(self) -> list[tuple[str, object]]:
         return [("Topic", self.topic), ("Throttle", int(self.throttle)), ("Queue", int(self.queue))]

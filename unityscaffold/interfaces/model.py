@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
-from typing import Union
+from typing import ClassVar, Union
 
 from unityscaffold.errors import SourceLocation
 
@@ -155,8 +155,30 @@ class Constant:
     location: SourceLocation | None = field(default=None, compare=False, repr=False)
 
 
+class _Named:
+    """The names every interface has; ``subfolder`` is where ROS 2 puts it (``msg``, ``srv``…)."""
+
+    __slots__ = ()
+    package: str
+    name: str
+    dialect: Dialect
+    subfolder: str
+
+    @property
+    def full_name(self) -> str:
+        """The wire name: ``pkg/Name`` in ROS 1, ``pkg/<subfolder>/Name`` in ROS 2."""
+        if self.dialect is Dialect.ROS1:
+            return f"{self.package}/{self.name}"
+        return f"{self.package}/{self.subfolder}/{self.name}"
+
+    @property
+    def short_full_name(self) -> str:
+        """``pkg/Name``, the form users type in either dialect."""
+        return f"{self.package}/{self.name}"
+
+
 @dataclass(frozen=True, slots=True)
-class MessageSpec:
+class MessageSpec(_Named):
     """A message, or one part of a service or action (``owner`` names that service or action).
 
     ``text`` is the message's own definition text exactly as the reference tool keeps it (for a
@@ -175,17 +197,6 @@ class MessageSpec:
     owner: str | None = None
 
     @property
-    def full_name(self) -> str:
-        if self.dialect is Dialect.ROS1:
-            return f"{self.package}/{self.name}"
-        return f"{self.package}/{self.subfolder}/{self.name}"
-
-    @property
-    def short_full_name(self) -> str:
-        """``pkg/Name``, the form users type in either dialect."""
-        return f"{self.package}/{self.name}"
-
-    @property
     def kind(self) -> InterfaceKind:
         return InterfaceKind.MSG
 
@@ -199,7 +210,7 @@ class MessageSpec:
 
 
 @dataclass(frozen=True, slots=True)
-class ServiceSpec:
+class ServiceSpec(_Named):
     """A service: its request and response halves (ROS 2 also derives an ``_Event`` message)."""
 
     package: str
@@ -214,16 +225,6 @@ class ServiceSpec:
     owner: str | None = None
 
     @property
-    def full_name(self) -> str:
-        if self.dialect is Dialect.ROS1:
-            return f"{self.package}/{self.name}"
-        return f"{self.package}/{self.subfolder}/{self.name}"
-
-    @property
-    def short_full_name(self) -> str:
-        return f"{self.package}/{self.name}"
-
-    @property
     def kind(self) -> InterfaceKind:
         return InterfaceKind.SRV
 
@@ -234,7 +235,7 @@ class ServiceSpec:
 
 
 @dataclass(frozen=True, slots=True)
-class ActionSpec:
+class ActionSpec(_Named):
     """An action: the three parts a user writes, and the messages and services derived from them.
 
     ROS 1 (genaction): ``derived`` holds ``XAction``, ``XActionGoal``, ``XActionResult`` and
@@ -252,16 +253,7 @@ class ActionSpec:
     source: str | None = None
     derived: tuple[MessageSpec, ...] = ()
     services: tuple[ServiceSpec, ...] = ()
-
-    @property
-    def full_name(self) -> str:
-        if self.dialect is Dialect.ROS1:
-            return f"{self.package}/{self.name}"
-        return f"{self.package}/action/{self.name}"
-
-    @property
-    def short_full_name(self) -> str:
-        return f"{self.package}/{self.name}"
+    subfolder: ClassVar[str] = "action"
 
     @property
     def kind(self) -> InterfaceKind:
