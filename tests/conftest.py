@@ -6,28 +6,18 @@ A missing tool or data set skips a test on a developer machine, and fails it in 
 
 from __future__ import annotations
 
-import os
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from helpers import IN_CI, require  # noqa: F401 (fixtures below use require)
 
-IN_CI = os.environ.get("CI", "").lower() == "true"
 REPO = Path(__file__).resolve().parent.parent
 ROS1_SHARE = Path("/usr/share")
 ROS2_SHARE = Path(sys.prefix) / "share"
 SYSTEM_PYTHON = Path("/usr/bin/python3")
-
-
-def require(available: object, what: str) -> None:
-    """Skip (locally) or fail (in CI) when ``what`` is not available."""
-    if available:
-        return
-    if IN_CI:
-        pytest.fail(f"{what} is missing: .ci/run must install it")
-    pytest.skip(f"{what} is not installed")
 
 
 @pytest.fixture(scope="session")

@@ -4,10 +4,24 @@ from __future__ import annotations
 
 import contextlib
 import io
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
+import pytest
+
 from unityscaffold.cli import main
+
+IN_CI = os.environ.get("CI", "").lower() == "true"
+
+
+def require(available: object, what: str) -> None:
+    """Skip (locally) or fail (in CI, where .ci/run must have installed it) when ``what`` is missing."""
+    if available:
+        return
+    if IN_CI:
+        pytest.fail(f"{what} is missing: .ci/run must install it")
+    pytest.skip(f"{what} is not installed")
 
 
 def snapshot(root: Path) -> dict[str, bytes]:

@@ -3,7 +3,6 @@ stubs of ROS#'s runtime and of UnityEngine, in ROS 1 and ROS 2 projects."""
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 from csharp import ROSSHARP_STUB, UNITY_STUBS, compile_cs

@@ -11,7 +11,6 @@ from unityscaffold.interfaces.model import ActionSpec, Dialect, MessageSpec, Ser
 from unityscaffold.interfaces.registry import Registry
 
 
-
 @pytest.fixture(scope="module")
 def registry(ros2_share) -> Registry:
     packages = sorted(p.parent for p in ros2_share.glob("*/package.xml")
@@ -21,7 +20,7 @@ def registry(ros2_share) -> Registry:
 
 @pytest.fixture(scope="module")
 def parser():
-    from conftest import require
+    from helpers import require
 
     try:
         from rosidl_adapter import parser as module

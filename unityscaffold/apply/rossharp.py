@@ -17,7 +17,7 @@ from unityscaffold.errors import UserError
 from unityscaffold.unity.project import ScriptInfo
 from unityscaffold.unity.values import ScriptRef
 
-__all__ = ["DEFAULT_VERSION", "PACKAGE", "RosSharp", "STOCK_SCRIPTS"]
+__all__ = ["DEFAULT_VERSION", "PACKAGE", "STOCK_SCRIPTS", "RosSharp"]
 
 PACKAGE = "com.siemens.ros-sharp"
 DEFAULT_VERSION = "2.2.1"

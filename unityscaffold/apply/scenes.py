@@ -16,7 +16,7 @@ from pathlib import Path
 from unityscaffold.apply.code import CodePlan
 from unityscaffold.apply.lock import LockComponent, LockFile
 from unityscaffold.apply.rossharp import STOCK_SCRIPTS, RosSharp
-from unityscaffold.errors import LocatedError, ScaffoldError, SourceLocation, UserError
+from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError
 from unityscaffold.manifest.model import Component, Manifest, ObjectPath, StructValue
 from unityscaffold.unity import Enum, ObjectRef, SceneDocument, ScriptRef
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
@@ -224,23 +224,22 @@ def plan_scenes(manifest: Manifest, code: CodePlan, rossharp: RosSharp,
                 scripts: dict[str, ScriptInfo], lock: LockFile) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
     ctx = _Context(manifest, code, rossharp, scripts)
-    locations = _scene_locations(manifest)
+    named = _scene_locations(manifest)
+    locations = dict(named)
     for old in lock.components:
         locations.setdefault(old.scene, SourceLocation(str(manifest.path)))
     plans = []
     for relative in sorted(locations):
-        if relative not in _scene_locations(manifest) and not (manifest.project_root / relative).is_file():
+        if relative not in named and not (manifest.project_root / relative).is_file():
             continue  # a scene only the lock knows, since deleted: nothing to prune
         doc = _load(manifest, relative, locations[relative])
         before = doc.text()
         plan = ScenePlan(manifest.project_root / relative, relative, before, before)
         try:
             _edit_scene(ctx, plan, doc, lock)
-        except LocatedError:
-            raise
-        except ScaffoldError as error:
-            raise _located(locations[relative], error) if isinstance(error, UserError) else error
-        problems = doc.validate()
+        except UserError as error:
+            raise _located(locations[relative], error) from None
+        problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
         if problems:
             raise LocatedError(problems)
         plan.after = doc.text()

@@ -8,9 +8,8 @@ from pathlib import Path
 
 import typer
 
-from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
-
 from unityscaffold.apply.files import Action, FileChange, plan_files, write_files
+from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.errors import Diagnostic, LocatedError, UserError

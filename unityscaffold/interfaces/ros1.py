@@ -342,7 +342,7 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     owner = f"{package}/{name}"
     parts: dict[str, MessageSpec] = {}
     problems: list[Diagnostic] = []
-    for (lines, _), part in zip(sections, ("Goal", "Result", "Feedback")):
+    for (lines, _), part in zip(sections, ("Goal", "Result", "Feedback"), strict=True):
         # The banner genaction adds is part of the text (and the md5) but documents nothing.
         spec, bad = _message_from_lines(
             lines, texts[name + part], package, name + part, path, subfolder="action",

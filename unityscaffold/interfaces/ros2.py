@@ -9,6 +9,7 @@ patterns; there is no ``Header`` shorthand; service and action separators are ex
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation
@@ -318,7 +319,7 @@ def _sections(text: str, count: int, path: str, what: str, expected: str):
             hint="in ROS 2 the separator is a line holding exactly '---'",
         )
     bounds = [-1, *cuts, len(lines)]
-    return [lines[a + 1 : b] for a, b in zip(bounds, bounds[1:])]
+    return [lines[a + 1 : b] for a, b in itertools.pairwise(bounds)]
 
 
 def _derived(package: str, name: str, fields: tuple[Field, ...], owner: str) -> MessageSpec:
@@ -375,7 +376,7 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     sections = _sections(text, 3, path, "an action", "GOAL\n---\nRESULT\n---\nFEEDBACK")
     owner = f"{package}/action/{name}"
     parts, problems = [], []
-    for lines, suffix in zip(sections, ("_Goal", "_Result", "_Feedback")):
+    for lines, suffix in zip(sections, ("_Goal", "_Result", "_Feedback"), strict=True):
         part_text = "\n".join(line for _, line in lines)
         spec, bad = _message(lines, part_text, package, name + suffix, path, subfolder="action",
                              owner=owner)

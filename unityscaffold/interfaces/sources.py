@@ -25,8 +25,7 @@ from unityscaffold.interfaces.model import Dialect, InterfaceKind
 __all__ = ["InterfaceFile", "PackageDir", "SearchRoot", "builtin_root", "discover", "search_roots"]
 
 _ROS1_DISTROS = frozenset(
-    "boxturtle cturtle diamondback electric fuerte groovy hydro indigo jade kinetic lunar "
-    "melodic noetic".split()
+    ["boxturtle", "cturtle", "diamondback", "electric", "fuerte", "groovy", "hydro", "indigo", "jade", "kinetic", "lunar", "melodic", "noetic"]
 )
 _SUBDIRS = tuple(kind.value for kind in InterfaceKind)
 _SKIP_DIRS = frozenset({"build", "devel", "log", "node_modules", "__pycache__"})
