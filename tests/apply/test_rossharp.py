@@ -1,0 +1,54 @@
+"""ROS#'s script GUIDs: the installed package's .meta files first, then the table of the version
+pinned in Packages/manifest.json, else a clear error saying what to install."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from helpers import build_tree
+
+from unityscaffold.apply.rossharp import RosSharp, pinned_version
+from unityscaffold.errors import UserError
+from unityscaffold.unity.project import script_index
+
+GIT = "https://github.com/siemens/ros-sharp.git?path=/com.siemens.ros-sharp"
+
+
+def _project(root: Path, pin: str | None, installed: dict[str, str] | None = None) -> RosSharp:
+    deps = {"com.siemens.ros-sharp": f"{GIT}#{pin}"} if pin else {}
+    files = {"Assets/.keep": "", "Packages/manifest.json": json.dumps({"dependencies": deps})}
+    for name, guid in (installed or {}).items():
+        base = f"Library/PackageCache/com.siemens.ros-sharp@1a2b/Runtime/RosBridgeClient/{name}.cs"
+        files[base] = "// ROS#\n"
+        files[base + ".meta"] = f"fileFormatVersion: 2\nguid: {guid}\n"
+    build_tree(root, files)
+    return RosSharp.of(root, script_index(root))
+
+
+def test_the_installed_packages_meta_wins(tmp_path):
+    rossharp = _project(tmp_path, "2.2.1", {"RosConnector": "0123456789abcdef0123456789abcdef"})
+    assert rossharp.script("RosConnector").guid == "0123456789abcdef0123456789abcdef"
+
+
+@pytest.mark.parametrize(("pin", "guid"), [
+    ("2.2.1", "ff98778ae051cfd40a6e4effdf851ebd"),
+    ("v2.2.0", "9fb7d56afaa30534e9a7dc10102f9a83"),
+    ("2.1.0", "9fb7d56afaa30534e9a7dc10102f9a83"),
+    ("2.0.0", "ff98778ae051cfd40a6e4effdf851ebd"),
+])
+def test_without_the_package_on_disk_the_pinned_releases_table_is_used(tmp_path, pin, guid):
+    assert _project(tmp_path, pin).script("RosConnector").guid == guid
+
+
+def test_pinned_version_reads_the_git_tag(tmp_path):
+    _project(tmp_path, "2.2.1")
+    assert pinned_version(tmp_path) == "2.2.1"
+
+
+def test_no_ros_sharp_at_all_says_what_to_install(tmp_path):
+    with pytest.raises(UserError) as caught:
+        _project(tmp_path, None).script("RosConnector")
+    assert "ROS# is not installed" in caught.value.message
+    assert '"com.siemens.ros-sharp"' in (caught.value.hint or "")
