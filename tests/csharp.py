@@ -10,6 +10,10 @@ import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
+from unityscaffold.apply.run import load_registry
+from unityscaffold.codegen import Options, generate
+from unityscaffold.manifest import load_manifest
+
 REPO = Path(__file__).resolve().parent.parent
 ROSSHARP_STUB = REPO / "tests" / "codegen" / "stubs" / "RosSharpStub.cs"
 UNITY_STUBS = (REPO / "tests" / "apply" / "stubs" / "UnityEngine.cs",
@@ -38,3 +42,48 @@ def compile_cs(mcs: str, sources: list[Path], out: Path, *, ros2: bool,
     args += [str(s) for s in sources]
     done = subprocess.run(args, capture_output=True, text=True, check=False, timeout=300)
     return Compiled(done.returncode, done.stdout + done.stderr, out)
+
+
+def _unity_engine(mcs: str, out: Path) -> Path:
+    compiled = compile_cs(mcs, [UNITY_STUBS[0]], out / "UnityEngine.dll", ros2=False)
+    compiled.assert_clean()
+    return compiled.assembly
+
+
+def _runtime_assembly(mcs: str, manifest_path: Path, out: Path, engine: Path) -> Path:
+    """A stand-in for ROS#'s runtime assembly: the stubs plus the shipped classes the manifest's
+    types use, generated with include_shipped (ROS# ships them precompiled)."""
+    manifest = load_manifest(manifest_path)
+    registry = load_registry(manifest, use_environment=False)
+    roots = [registry.get(item.type) for item in (*manifest.topics, *manifest.services)]
+    # ROS#'s action base classes use the goal status classes it ships.
+    status_types = (("action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus") if manifest.ros == 2
+                    else ("actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"))
+    runtime_roots = roots + [registry.get(name) for name in status_types]
+    everything = generate(registry, runtime_roots, Options(manifest.ros, include_shipped=True))
+    ours = generate(registry, roots, Options(manifest.ros))
+    generated = {f.path for f in ours.files}
+    sources = [ROSSHARP_STUB, UNITY_STUBS[1]]
+    for file in everything.files:
+        if file.path not in generated:
+            path = out / "shipped" / file.path
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(file.text, encoding="utf-8")
+            sources.append(path)
+    compiled = compile_cs(mcs, sources, out / "RosSharp.dll", ros2=manifest.ros == 2,
+                          references=(engine,))
+    compiled.assert_clean()
+    return compiled.assembly
+
+
+def compile_applied_project(mcs: str, manifest_path: Path, out: Path, *, ros2: bool) -> None:
+    """Compile as Unity would: UnityEngine, ROS#'s runtime, then the project's scripts."""
+    out.mkdir(parents=True, exist_ok=True)
+    engine = _unity_engine(mcs, out)
+    runtime = _runtime_assembly(mcs, manifest_path, out, engine)
+    project = load_manifest(manifest_path).output_dir
+    sources = sorted(project.rglob("*.cs"))
+    assert any(p.name.endswith(".User.cs") for p in sources)
+    compiled = compile_cs(mcs, sources, out / "Assembly-CSharp.dll", ros2=ros2,
+                          references=(engine, runtime))
+    compiled.assert_clean()

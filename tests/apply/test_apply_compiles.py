@@ -5,61 +5,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from csharp import ROSSHARP_STUB, UNITY_STUBS, compile_cs
+from csharp import compile_applied_project
 from helpers import run_cli
 
-from unityscaffold.apply.run import load_registry
-from unityscaffold.codegen import Options, generate
-from unityscaffold.manifest import load_manifest
 
 REPO = Path(__file__).resolve().parents[2]
 
 
-def _unity_engine(mcs: str, out: Path) -> Path:
-    compiled = compile_cs(mcs, [UNITY_STUBS[0]], out / "UnityEngine.dll", ros2=False)
-    compiled.assert_clean()
-    return compiled.assembly
-
-
-def _runtime_assembly(mcs: str, manifest_path: Path, out: Path, engine: Path) -> Path:
-    """A stand-in for ROS#'s runtime assembly: the stubs plus the shipped classes the manifest's
-    types use, generated with include_shipped (ROS# ships them precompiled)."""
-    manifest = load_manifest(manifest_path)
-    registry = load_registry(manifest, use_environment=False)
-    roots = [registry.get(item.type) for item in (*manifest.topics, *manifest.services)]
-    # ROS#'s ROS 2 action bases use action_msgs classes it ships.
-    runtime_roots = roots + ([registry.get("action_msgs/msg/GoalInfo"),
-                              registry.get("action_msgs/msg/GoalStatus")] if manifest.ros == 2 else [])
-    everything = generate(registry, runtime_roots, Options(manifest.ros, include_shipped=True))
-    ours = generate(registry, roots, Options(manifest.ros))
-    generated = {f.path for f in ours.files}
-    sources = [ROSSHARP_STUB, UNITY_STUBS[1]]
-    for file in everything.files:
-        if file.path not in generated:
-            path = out / "shipped" / file.path
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(file.text, encoding="utf-8")
-            sources.append(path)
-    compiled = compile_cs(mcs, sources, out / "RosSharp.dll", ros2=manifest.ros == 2,
-                          references=(engine,))
-    compiled.assert_clean()
-    return compiled.assembly
-
-
-def _compile_project(mcs: str, manifest_path: Path, out: Path, *, ros2: bool) -> None:
-    """Compile as Unity would: UnityEngine, ROS#'s runtime, then the project's scripts."""
-    engine = _unity_engine(mcs, out)
-    runtime = _runtime_assembly(mcs, manifest_path, out, engine)
-    project = load_manifest(manifest_path).output_dir
-    sources = sorted(project.rglob("*.cs"))
-    assert any(p.name.endswith(".User.cs") for p in sources)
-    compiled = compile_cs(mcs, sources, out / "Assembly-CSharp.dll", ros2=ros2,
-                          references=(engine, runtime))
-    compiled.assert_clean()
-
-
 def test_the_sample_projects_generated_code_compiles(mcs, tmp_path):
-    _compile_project(mcs, REPO / "sample_project" / "robot.yaml", tmp_path, ros2=False)
+    compile_applied_project(mcs, REPO / "sample_project" / "robot.yaml", tmp_path, ros2=False)
 
 
 ROS2_MANIFEST = """\
@@ -109,7 +63,7 @@ def test_an_init_project_with_a_ros2_package_applies_idempotently_and_compiles(m
     assert "  RosBridgeServerUrl: ws://10.0.0.2:9090\n" in scene
     assert "  Serializer: 1\n" in scene and "  selectedRosVersion: 1\n" in scene
     assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
-    _compile_project(mcs, project / "robot.yaml", tmp_path, ros2=True)
+    compile_applied_project(mcs, project / "robot.yaml", tmp_path, ros2=True)
 
 
 def test_switching_the_manifest_to_ros1_removes_the_ros2_define(tmp_path):
