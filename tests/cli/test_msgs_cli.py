@@ -117,3 +117,12 @@ def test_bad_ros_version_is_a_user_error():
 def test_missing_path_is_a_user_error(tmp_path):
     run = run_cli("msgs", "list", "--path", str(tmp_path / "nope"))
     assert run.code == 2 and "interface folder not found" in run.err
+
+
+@pytest.mark.parametrize("args", [("msgs", "show"), ("apply", "--no-such-option"), ("msgs", "frob"),
+                                  ("init",)])
+def test_usage_errors_exit_2_without_a_traceback(args):
+    run = run_cli(*args)
+    assert run.code == 2
+    assert "Traceback" not in run.err and "internal error" not in run.err
+    assert "Usage:" in run.err or "Error" in run.err

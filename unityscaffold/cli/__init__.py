@@ -61,6 +61,17 @@ def _root(
     """Generate ROS# message classes, ROS components and scene wiring for Unity."""
 
 
+def _usage_errors() -> tuple[type[BaseException], ...]:
+    """Click's usage-error class, wherever it lives: typer 0.26+ bundles its own click."""
+    found = []
+    for module in ("typer._click.exceptions", "click.exceptions"):
+        try:
+            found.append(importlib.import_module(module).ClickException)
+        except ImportError:
+            continue
+    return tuple(found)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; user errors become a message on stderr and exit status 2, never a traceback."""
     try:
@@ -78,11 +89,9 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         typer.echo("interrupted", err=True)
         return 130
-    except Exception as exc:  # a click usage error or a bug
-        import click
-
-        if isinstance(exc, click.ClickException):
-            exc.show()
+    except Exception as exc:  # a usage error or a bug
+        if isinstance(exc, _usage_errors()):
+            exc.show()  # type: ignore[attr-defined]
             return int(Exit.USER_ERROR)
         import traceback
 
