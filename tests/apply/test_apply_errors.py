@@ -106,3 +106,24 @@ def test_a_malformed_interface_file_is_located(sample):
 def test_a_corrupt_lock_file_is_refused(sample):
     (sample / "robot.lock.json").write_text("{not json")
     _apply_fails(sample, "robot.lock.json is not a valid unityscaffold lock file")
+
+
+def test_a_symlinked_folder_inside_the_output_cannot_lead_writes_outside(sample, tmp_path):
+    outside = tmp_path / "outside_scripts"
+    outside.mkdir()
+    scripts = sample / "unity" / "Assets" / "RosGenerated" / "Scripts"
+    shutil.rmtree(scripts)
+    scripts.symlink_to(outside)
+    _apply_fails(sample, "outside the Unity project", "symbolic link")
+    assert not any(outside.iterdir())
+
+
+def test_a_tampered_lock_cannot_delete_files_outside_the_project(sample, tmp_path):
+    victim = tmp_path / "victim.txt"
+    victim.write_text("precious\n")
+    lock = sample / "robot.lock.json"
+    text = lock.read_text()
+    digest = __import__("hashlib").sha256(b"precious\n").hexdigest()
+    lock.write_text(text.replace('"files": {', f'"files": {{\n    "../../victim.txt": "{digest}",', 1))
+    _apply_fails(sample, "robot.lock.json is not a valid unityscaffold lock file", "Assets/")
+    assert victim.read_text() == "precious\n"

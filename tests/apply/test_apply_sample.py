@@ -133,3 +133,20 @@ def test_json_output_for_scripts(sample):
     data = json.loads(run.out)
     assert data["in_sync"] is False
     assert {"path": "Assets/Scenes/Main.unity", "action": "update"} in data["files"]
+
+
+def test_a_component_the_user_attached_is_adopted_but_never_pruned(sample):
+    """A RosConnector the user put on a GameObject before the manifest named it stays theirs."""
+    manifest = sample / "robot.yaml"
+    scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    # Pretend the user made the connector: drop it from the lock (apply then sees it as theirs).
+    lock = json.loads((sample / "robot.lock.json").read_text())
+    lock["components"] = [c for c in lock["components"] if c["source"] != "connector"]
+    (sample / "robot.lock.json").write_text(json.dumps(lock, indent=2) + "\n")
+    assert run_cli("apply", str(manifest)).code == 0
+    manifest.write_text(manifest.read_text().replace("gameobject: RosConnector\n", "gameobject: Bridge\n"))
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.err
+    assert "add RosConnector to Bridge" in run.out
+    assert "remove RosConnector" not in run.out and "remove connector" not in run.out
+    assert scene.read_text().count("guid: ff98778ae051cfd40a6e4effdf851ebd") == 2

@@ -11,7 +11,7 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass, field
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import UserError
 
@@ -39,6 +39,39 @@ class LockComponent:
     source: str = ""  # what in the manifest asked for it, e.g. "topic /odom"
 
 
+def asset_path(value: object) -> str:
+    """A project-relative path from the lock, refused unless it stays inside ``Assets/``.
+
+    The lock decides what apply deletes and which scenes it edits, so a lock edited by hand
+    (or by a bad merge) must not be able to point anywhere else.
+    """
+    if not isinstance(value, str):
+        raise TypeError(f"expected a path, found {value!r}")
+    parts = PurePosixPath(value).parts
+    if (not parts or parts[0] != "Assets" or ".." in parts or "\\" in value
+            or PurePosixPath(value).is_absolute()):
+        raise ValueError(f"{value!r} is not a path inside the project's Assets/ folder")
+    return value
+
+
+def _asset_map(data: dict[object, object]) -> dict[str, str]:
+    found = {}
+    for key, value in data.items():
+        if not isinstance(value, str):
+            raise TypeError(f"expected a sha256 for {key!r}, found {value!r}")
+        found[asset_path(key)] = value
+    return found
+
+
+def _component(data: dict[str, object]) -> LockComponent:
+    values = {key: data[key] for key in ("scene", "gameobject", "script")}
+    values["source"] = data.get("source", "")
+    if not all(isinstance(v, str) for v in values.values()):
+        raise TypeError(f"component entries hold strings, found {data!r}")
+    asset_path(values["scene"])
+    return LockComponent(**values)  # type: ignore[arg-type]
+
+
 @dataclass(frozen=True, slots=True)
 class LockFile:
     files: dict[str, str] = field(default_factory=dict)
@@ -59,9 +92,9 @@ class LockFile:
             if data.get("version") != LOCK_VERSION:
                 raise ValueError(f"unsupported lock version {data.get('version')!r}")
             return cls(
-                files={str(k): str(v) for k, v in data["files"].items()},
-                user_files={str(k): str(v) for k, v in data["user_files"].items()},
-                components=tuple(LockComponent(**c) for c in data["components"]),
+                files=_asset_map(data["files"]),
+                user_files=_asset_map(data["user_files"]),
+                components=tuple(_component(c) for c in data["components"]),
             )
         except (ValueError, KeyError, TypeError, AttributeError) as exc:
             raise UserError(f"{path} is not a valid unityscaffold lock file: {exc}",

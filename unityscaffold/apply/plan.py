@@ -93,6 +93,9 @@ def _prunable(manifest: Manifest, lock: LockFile, wanted: set[str], created: set
             current = path.read_bytes()
         except FileNotFoundError:
             continue
+        except OSError as exc:
+            notes.append(f"kept {relative}: cannot read it ({exc.strerror})")
+            continue
         if sha256(current) != digest:
             notes.append(f"kept {relative}: edited since apply made it; delete it yourself if unused")
             continue
@@ -101,6 +104,22 @@ def _prunable(manifest: Manifest, lock: LockFile, wanted: set[str], created: set
         if meta.exists():
             gone.append(meta)
     return gone
+
+
+def _check_inside(project: Path, paths: list[Path]) -> None:
+    """Refuse any write or deletion whose folder resolves outside the project.
+
+    The manifest's paths are checked when it loads, but a symbolic link created later inside
+    the output folder (or a stale lock) could still lead elsewhere.
+    """
+    root = project.resolve()
+    for path in paths:
+        real = path.parent.resolve() / path.name
+        if root not in real.parents:
+            raise UserError(f"refusing to touch {path}: it resolves to {real}, outside the "
+                            f"Unity project {root}",
+                            hint="a folder on the way is a symbolic link; replace it with a real "
+                            "folder inside the project")
 
 
 def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) -> Plan:
@@ -133,6 +152,7 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
         user_files=user_digests,
         components=tuple(sorted({c for s in scenes for c in s.components})),
     )
+    _check_inside(project, [d.path for d in desired] + deletions)
     desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
     changes = plan_files(desired)
     return Plan(manifest, changes, deletions, scenes, conflicts, notes,

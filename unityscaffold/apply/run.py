@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply.files import write_files
+from unityscaffold.apply.lock import lock_path
 from unityscaffold.apply.plan import Plan, make_plan
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.interfaces.registry import Registry
@@ -60,8 +61,16 @@ def run(manifest_path: Path, mode: Mode, *, force: bool = False,
             hint="move your code into the matching .User.cs file (it is never rewritten), "
             "or run apply --force to overwrite these files",
         )
-    outcome.written = write_files(plan.changes)
+    # The lock is written last: if a deletion fails, the old lock still lists the file and the
+    # next run tries again instead of forgetting it.
+    lock = lock_path(plan.manifest.path)
+    outcome.written = write_files([c for c in plan.changes if c.path != lock])
     for path in plan.deletions:
-        path.unlink(missing_ok=True)
+        try:
+            path.unlink(missing_ok=True)
+        except OSError as exc:
+            raise UserError(f"cannot remove {path}: {exc.strerror}; the other changes were written",
+                            hint="fix the cause and run apply again to finish the clean-up") from None
         outcome.deleted.append(path)
+    outcome.written += write_files([c for c in plan.changes if c.path == lock])
     return outcome

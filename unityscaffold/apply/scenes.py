@@ -52,9 +52,11 @@ def _located(where: SourceLocation, error: UserError) -> LocatedError:
 class _SceneEditor:
     """Applies the desired components to one loaded scene, recording what it did."""
 
-    def __init__(self, plan: ScenePlan, doc: SceneDocument) -> None:
+    def __init__(self, plan: ScenePlan, doc: SceneDocument, owned: set[tuple[str, str]]) -> None:
         self.plan = plan
         self.doc = doc
+        self.owned = owned  # (GameObject path, script GUID) of components an earlier apply added
+        self.wanted: set[tuple[str, str]] = set()
 
     def gameobject(self, path: str, create: bool, where: SourceLocation):
         try:
@@ -65,6 +67,7 @@ class _SceneEditor:
     def attach(self, path: str, create: bool, script: ScriptRef, fields: list[tuple[str, FieldValue]],
                where: SourceLocation, source: str):
         go = self.gameobject(path, create, where)
+        self.wanted.add((path, script.guid))
         existed = self.doc.find_component(go, script.guid, script.file_id) is not None
         before = self.doc.text()
         try:
@@ -76,7 +79,10 @@ class _SceneEditor:
             self.plan.actions.append(f"add {name} to {path}")
         elif self.doc.text() != before:
             self.plan.actions.append(f"update {name} on {path}")
-        self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, source))
+        # Only what apply added is apply's to prune later; a component the user attached before
+        # the manifest named it stays theirs.
+        if not existed or (path, script.guid) in self.owned:
+            self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, source))
         return component
 
     def prune(self, previous: Iterable[LockComponent], keep: set[tuple[str, str]]) -> None:
@@ -162,7 +168,8 @@ def _value(ctx: _Context, doc: SceneDocument, name: str, value: object,
 
 def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
     m = ctx.manifest
-    editor = _SceneEditor(plan, doc)
+    owned = {(c.gameobject, c.script) for c in lock.components if c.scene == plan.relative}
+    editor = _SceneEditor(plan, doc, owned)
     connector_id = 0
     connector_script = None
     if m.connector.scene == plan.relative or any(
@@ -193,8 +200,7 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
                           where, f"connector for {item.script}")
         fields = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in item.fields]
         editor.attach(item.gameobject, item.create, ref, fields, where, f"component {item.script}")
-    keep = {(c.gameobject, c.script) for c in plan.components}
-    editor.prune(lock.components, keep)
+    editor.prune(lock.components, editor.wanted)
 
 
 def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocument:
