@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.apply.files import DesiredFile
+from unityscaffold.apply.rossharp import RESERVED_NAMES
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.scripts import (
@@ -25,6 +26,7 @@ from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Direction, Manifest, Role, Service, Topic
 from unityscaffold.unity.meta import folder_meta, meta_guid, monoscript_meta
+from unityscaffold.unity.project import ScriptInfo
 
 __all__ = ["CodePlan", "PlannedScript", "plan_code"]
 
@@ -100,8 +102,26 @@ def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[Des
     return metas
 
 
-def plan_code(manifest: Manifest, registry: Registry, salt: str) -> CodePlan:
+def _check_class_names(manifest: Manifest, scripts: dict[str, ScriptInfo]) -> None:
+    """A generated script must not share its class name with ROS#'s or another script's:
+    Unity and the manifest's ``components`` find scripts by that name."""
+    ours = (manifest.output_dir / "Scripts").relative_to(manifest.project_root).as_posix()
+    elsewhere = {info.class_name: info.path for info in scripts.values()
+                 if not info.path.startswith(ours + "/")}
+    for item in (*manifest.topics, *manifest.services):
+        clash = ("ROS#'s stock script" if item.class_name in RESERVED_NAMES
+                 else elsewhere.get(item.class_name))
+        if clash:
+            where = item.locations.of("class") if item.locations.has("class") else item.locations.of("name")
+            raise LocatedError.at(where, f"the script generated for {item.name} would be named "
+                                  f"{item.class_name}, like {clash}",
+                                  hint="give this entry another name with `class:`")
+
+
+def plan_code(manifest: Manifest, registry: Registry, salt: str,
+              scripts: dict[str, ScriptInfo]) -> CodePlan:
     """Everything the manifest's topics and services need in C#, as desired files."""
+    _check_class_names(manifest, scripts)
     items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]

@@ -130,8 +130,8 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
                         hint="set `project:` in the manifest, or create one with scaffold init")
     lock = LockFile.read(lock_path(manifest.path))
     salt = project_salt(project)
-    code: CodePlan = plan_code(manifest, registry, salt)
     scripts = script_index(project)
+    code: CodePlan = plan_code(manifest, registry, salt, scripts)
     scenes = plan_scenes(manifest, code, RosSharp.of(project, scripts), scripts, lock)
 
     generated = list(code.generated)

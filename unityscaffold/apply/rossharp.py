@@ -34,6 +34,9 @@ _RESTORED = {
     "CompressedImageSubscriber": "c7aa53353797a634581932ea902c2832",
     "RawImageSubscriber": "1629fa27836f759449638b17051e27a6",
     "ImagePublisher": "a908e83b1e7ce9e428caae2838615cc3",
+    "JointStateSubscriber": "4fe4cf3b1dd3507418f7ec019f9193ff",
+    "TwistSubscriber": "81c5dfb51482c2e47b602e8096d45712",
+    "JoySubscriber": "ac3b5c497c54f1b4ab2a96f69bc1586d",
 }
 _REGENERATED = {
     "RosConnector": "9fb7d56afaa30534e9a7dc10102f9a83",
@@ -49,9 +52,13 @@ _REGENERATED = {
     "RawImageSubscriber": "3736584ded6b65644b6b0925a3a2cb1c",
     "ImagePublisher": "95b94268b572270479500d7d77a37335",
 }
-# Stock components built on UnityPublisher/UnitySubscriber: [RequireComponent(typeof(RosConnector))].
+# ROS#'s stock components, all built on UnityPublisher/UnitySubscriber/UnityServiceProvider,
+# which carry [RequireComponent(typeof(RosConnector))]. (The 2.1.0-2.2.0 table lacks the GUIDs of
+# the last three subscribers; with such a pin they resolve only from the installed package.)
 STOCK_SCRIPTS = frozenset(_RESTORED) - {"RosConnector", "UnityPublisher", "UnitySubscriber",
-                                         "UnityServiceProvider"}
+                                         "UnityServiceProvider"} | {
+    "StringPublisher", "StringSubscriber", "GetParamServiceProvider"}
+RESERVED_NAMES = frozenset(_RESTORED) | STOCK_SCRIPTS
 _VERSION = re.compile(r"#v?(\d+)\.(\d+)\.(\d+)")
 
 

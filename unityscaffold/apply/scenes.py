@@ -116,13 +116,28 @@ class _Context:
     rossharp: RosSharp
     scripts: dict[str, ScriptInfo]
 
+    def planned(self, class_name: str) -> ScriptRef | None:
+        """A script this plan generates: known by name before its file exists on disk."""
+        for script in self.code.scripts:
+            if script.view.class_name == class_name:
+                return ScriptRef(script.guid, class_name=class_name, namespace=script.view.namespace)
+        return None
+
+    def class_of(self, guid: str) -> str | None:
+        for script in self.code.scripts:
+            if script.guid == guid:
+                return script.view.class_name
+        info = self.scripts.get(guid)
+        return info.class_name if info else None
+
 
 def _component_script(ctx: _Context, item: Component) -> ScriptRef:
     where = item.locations.of("script")
     try:
         if item.script.endswith(".cs"):
             return script_ref_for_file(ctx.manifest.project_root / item.script)
-        found = find_script(ctx.manifest.project_root, item.script, index=ctx.scripts)
+        found = ctx.planned(item.script) or find_script(ctx.manifest.project_root, item.script,
+                                                        index=ctx.scripts)
         if found is None and ctx.rossharp.knows(item.script):
             found = ctx.rossharp.script(item.script)
     except UserError as error:
@@ -146,8 +161,7 @@ def _reference(ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath,
     if wanted is None:
         return ObjectRef(go.file_id)
     for comp in doc.components_of(go):
-        script_name = ctx.scripts.get(comp.script.guid).class_name if (
-            comp.script and comp.script.guid in ctx.scripts) else None
+        script_name = ctx.class_of(comp.script.guid) if comp.script else None
         if wanted in (comp.type_name, script_name) or (
                 wanted == "Transform" and comp.class_id == _TRANSFORM_CLASS_ID):
             return ObjectRef(comp.file_id)
@@ -194,6 +208,8 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             continue
         ref = _component_script(ctx, item)
         where = item.locations.of("gameobject")
+        # Created before the fields are read, so they may refer to it.
+        editor.gameobject(item.gameobject, item.create, where)
         if item.script in STOCK_SCRIPTS and connector_script is not None:
             # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
             editor.attach(item.gameobject, item.create, connector_script, _connector_fields(m),

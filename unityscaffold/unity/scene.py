@@ -282,7 +282,7 @@ class SceneDocument:
         shown = ", ".join(repr(n) for n in existing[:30]) or "none"
         return UserError(
             f"{self.path}: no GameObject named '{names[level]}' {where}; names there: {shown}",
-            hint="use --create to create it",
+            hint="ask for it to be created: `scene attach --create`, or `create: true` in the manifest",
         )
 
     def _insert(self, doc: Doc, index: int | None = None) -> None:
