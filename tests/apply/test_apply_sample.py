@@ -86,9 +86,9 @@ def test_removing_a_topic_prunes_its_files_and_component_but_not_edited_user_cod
     assert run.code == 0, run.err
     assert not (scripts / "OdomSubscriber.cs").exists()
     assert not (scripts / "OdomSubscriber.User.cs").exists()  # untouched: removed with its script
-    assert not (scripts / "ScanSubscriber.cs").exists()
-    assert user_scan.exists()  # edited by the user: kept
-    assert "kept Assets/RosGenerated/Scripts/ScanSubscriber.User.cs" in run.out
+    # Edited by the user: kept, with its generated half so that the project still compiles.
+    assert user_scan.exists() and (scripts / "ScanSubscriber.cs").exists()
+    assert "kept Assets/RosGenerated/Scripts/ScanSubscriber.User.cs (you edited it)" in run.out
     scene = (sample / "unity" / "Assets" / "Scenes" / "Main.unity").read_text()
     assert "Topic: /odom\n" not in scene and "Topic: /scan\n" not in scene
     assert "remove topic /odom from Robot" in run.out
@@ -150,3 +150,21 @@ def test_a_component_the_user_attached_is_adopted_but_never_pruned(sample):
     assert "add RosConnector to Bridge" in run.out
     assert "remove RosConnector" not in run.out and "remove connector" not in run.out
     assert scene.read_text().count("guid: ff98778ae051cfd40a6e4effdf851ebd") == 2
+
+
+def test_an_untouched_user_half_follows_a_type_change_and_an_edited_one_gets_a_note(sample):
+    manifest = sample / "robot.yaml"
+    scripts = sample / "unity" / "Assets" / "RosGenerated" / "Scripts"
+    edited = scripts / "BaseStatusSubscriber.User.cs"
+    edited.write_text(edited.read_text().replace("// Runs on", "Debug.Log(message); // Runs on"))
+    text = manifest.read_text().replace("type: nav_msgs/Odometry", "type: geometry_msgs/PoseStamped")
+    manifest.write_text(text.replace("type: diffbot_msgs/BaseStatus", "type: diffbot_msgs/WheelState"))
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.err
+    untouched = (scripts / "OdomSubscriber.User.cs").read_text()
+    assert "Geometry.PoseStamped message" in untouched and "Nav.Odometry" not in untouched
+    assert "Diffbot.BaseStatus message" in edited.read_text()  # the user's file is theirs
+    assert "BaseStatusSubscriber.User.cs was written for an earlier version" in run.out
+    second = run_cli("apply", str(manifest))
+    assert second.out.endswith("wrote 0 files, removed 0\n")
+    assert "written for an earlier version" not in second.out  # said once, when it changed

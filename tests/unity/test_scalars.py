@@ -165,3 +165,11 @@ def test_a_stored_value_equals_a_requested_one_by_meaning_not_bytes(
     stored: object, value: object, equal: bool
 ) -> None:
     assert value_equals(stored, value) is equal  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("value", [" \n", "a \nb", "a\n b", "x\n ", "\n \n"])
+def test_spaces_around_line_breaks_survive(value: str) -> None:
+    """Found by the property test above: a single-quoted scalar drops them on reading."""
+    doc = "\n".join(emit_field("k", value, 2)) + "\n"
+    for loaded in _readers(doc):
+        assert loaded["k"] == value

@@ -12,9 +12,11 @@ from pathlib import Path
 from unityscaffold.apply.code import CodePlan, plan_code
 from unityscaffold.apply.files import DesiredFile, FileChange, plan_files
 from unityscaffold.apply.lock import LockFile, lock_path, sha256
+from unityscaffold.apply.prune import plan_pruning
 from unityscaffold.apply.rossharp import RosSharp
 from unityscaffold.apply.scenes import ScenePlan, plan_scenes
 from unityscaffold.apply.settings import with_ros_define
+from unityscaffold.apply.userfiles import plan_user_files
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
@@ -81,31 +83,6 @@ def _conflicts(manifest: Manifest, generated: list[DesiredFile], lock: LockFile)
     return found
 
 
-def _prunable(manifest: Manifest, lock: LockFile, wanted: set[str], created: set[str],
-              notes: list[str]) -> list[Path]:
-    """Files an earlier apply made that the manifest no longer needs (hand-edited ones stay)."""
-    gone = []
-    for relative, digest in sorted({**lock.files, **lock.user_files}.items()):
-        if relative in wanted or relative in created:
-            continue
-        path = manifest.project_root / relative
-        try:
-            current = path.read_bytes()
-        except FileNotFoundError:
-            continue
-        except OSError as exc:
-            notes.append(f"kept {relative}: cannot read it ({exc.strerror})")
-            continue
-        if sha256(current) != digest:
-            notes.append(f"kept {relative}: edited since apply made it; delete it yourself if unused")
-            continue
-        gone.append(path)
-        meta = path.with_name(path.name + ".meta")
-        if meta.exists():
-            gone.append(meta)
-    return gone
-
-
 def _check_inside(project: Path, paths: list[Path]) -> None:
     """Refuse any write or deletion whose folder resolves outside the project.
 
@@ -136,20 +113,19 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
 
     generated = list(code.generated)
     conflicts = [] if force else _conflicts(manifest, generated, lock)
-    desired = generated + list(code.created_once) + _settings_change(manifest)
+    user = plan_user_files(manifest, code, lock)
+    user_paths = {d.path for d in user.desired}
+    desired = generated + [d for d in code.created_once if d.path not in user_paths]
+    desired += user.desired + _settings_change(manifest)
     desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
 
-    # A user half is recorded with the digest of what apply creates, so pruning can tell an
-    # untouched one (removed with its script) from one the user wrote code in (kept).
-    created = {d.path: d.content for d in code.created_once}
-    user_digests = {_relative(manifest, s.user_path): sha256(created[s.user_path])
-                    for s in code.scripts}
-    notes: list[str] = []
-    wanted = {_relative(manifest, d.path) for d in desired}
-    deletions = _prunable(manifest, lock, wanted, set(user_digests), notes)
+    pruning = plan_pruning(manifest, lock, {_relative(manifest, d.path) for d in desired})
+    deletions = pruning.deletions
+    notes = user.notes + pruning.notes
     new_lock = LockFile(
-        files={_relative(manifest, d.path): sha256(d.content) for d in generated},
-        user_files=user_digests,
+        files={**pruning.kept_files,
+               **{_relative(manifest, d.path): sha256(d.content) for d in generated}},
+        user_files={**pruning.kept_user_files, **user.digests},
         components=tuple(sorted({c for s in scenes for c in s.components})),
     )
     _check_inside(project, [d.path for d in desired] + deletions)

@@ -93,7 +93,11 @@ def _plain_notation(digits: str, exponent: int) -> str:
 def _needs_double_quotes(text: str) -> bool:
     # Unity decodes UTF-8 only inside double quotes, so anything outside printable ASCII
     # (and CR, which a single-quoted scalar cannot keep) goes there as an escape.
-    return any(not (" " <= ch <= "~") and ch != "\n" for ch in text)
+    if any(not (" " <= ch <= "~") and ch != "\n" for ch in text):
+        return True
+    # A multi-line single-quoted scalar loses the spaces around each line break when read.
+    return "\n" in text and any(
+        line != line.strip(" ") for line in text.split("\n")[:-1] + text.split("\n")[1:])
 
 
 def _plain_allowed(text: str, quote_trailing_bracket: bool) -> bool:

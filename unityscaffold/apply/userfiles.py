@@ -1,0 +1,63 @@
+"""The user halves of generated scripts (``<Class>.User.cs``): created once, then the user's.
+
+The lock records the digest of what apply created. While a user half still has exactly that
+content, the user never touched it: apply may refresh it when the generated half's signature
+changes (a topic's type changed, say) and may remove it with its script. Once edited, it is
+never rewritten or removed; apply only says when it was made for an earlier signature.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from unityscaffold.apply.code import CodePlan
+from unityscaffold.apply.files import DesiredFile
+from unityscaffold.apply.lock import LockFile, sha256
+from unityscaffold.manifest.model import Manifest
+
+__all__ = ["UserFiles", "plan_user_files"]
+
+
+@dataclass(slots=True)
+class UserFiles:
+    desired: list[DesiredFile] = field(default_factory=list)
+    digests: dict[str, str] = field(default_factory=dict)  # for the new lock
+    notes: list[str] = field(default_factory=list)
+
+
+def _regenerates(path: Path, code: CodePlan) -> bool:
+    """Whether this plan changes the generated half at ``path`` (so its signature may move)."""
+    wanted = next(d.content for d in code.generated if d.path == path)
+    try:
+        return path.read_bytes() != wanted
+    except OSError:
+        return True
+
+
+def plan_user_files(manifest: Manifest, code: CodePlan, lock: LockFile) -> UserFiles:
+    result = UserFiles()
+    initial = {d.path: d.content for d in code.created_once}
+    for script in code.scripts:
+        relative = script.user_path.relative_to(manifest.project_root).as_posix()
+        fresh = initial[script.user_path]
+        recorded = lock.user_files.get(relative)
+        try:
+            current = script.user_path.read_bytes()
+        except FileNotFoundError:
+            current = None
+        if current is None or recorded is None or current == fresh:
+            # New, unknown to the lock (kept as it is), or already as apply would create it.
+            result.desired.append(DesiredFile(script.user_path, fresh, create_only=True))
+            result.digests[relative] = sha256(fresh)
+        elif sha256(current) == recorded:
+            # Untouched since apply created it, but made for an earlier generated half.
+            result.desired.append(DesiredFile(script.user_path, fresh))
+            result.digests[relative] = sha256(fresh)
+        else:
+            result.digests[relative] = recorded
+            if recorded != sha256(fresh) and _regenerates(script.path, code):
+                result.notes.append(
+                    f"{relative} was written for an earlier version of {script.view.class_name} "
+                    f"({script.source}); check that its methods still match {script.path.name}")
+    return result
