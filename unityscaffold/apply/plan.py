@@ -47,10 +47,13 @@ class Plan:
         return not self.writes and not self.deletions
 
     def relative(self, path: Path) -> str:
-        try:
-            return path.relative_to(self.manifest.project_root).as_posix()
-        except ValueError:
-            return str(path)
+        """``path`` for people: inside the project relative to it, else to the manifest."""
+        for base in (self.manifest.project_root, self.manifest.path.parent):
+            try:
+                return path.relative_to(base).as_posix()
+            except ValueError:
+                continue
+        return str(path)
 
 
 def _settings_change(manifest: Manifest) -> list[DesiredFile]:

@@ -36,12 +36,14 @@ namespace UnityEngine
     {
         public static float time { get { return 0f; } }
         public static float deltaTime { get { return 0f; } }
+        public static float realtimeSinceStartup { get { return 0f; } }
     }
 
     public static class Debug
     {
         public static void Log(object message) { }
         public static void LogWarning(object message) { }
+        public static void LogWarning(object message, Object context) { }
         public static void LogError(object message) { }
         public static void LogError(object message, Object context) { }
     }

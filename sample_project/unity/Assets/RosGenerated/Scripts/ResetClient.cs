@@ -34,6 +34,11 @@ namespace RosGenerated
             {
                 return;
             }
+            if (Connector.IsConnected == null || !Connector.IsConnected.WaitOne(0))
+            {
+                Debug.LogWarning(GetType().Name + ": not connected to " + Connector.RosBridgeServerUrl + "; " + ServiceName + " not called.", this);
+                return;
+            }
             Connector.RosSocket.CallService<global::RosSharp.RosBridgeClient.MessageTypes.Std.TriggerRequest, global::RosSharp.RosBridgeClient.MessageTypes.Std.TriggerResponse>(ServiceName, Receive, request);
         }
 
@@ -62,7 +67,7 @@ namespace RosGenerated
             }
         }
 
-private bool FindConnector()
+        private bool FindConnector()
         {
             if (Connector == null)
             {
