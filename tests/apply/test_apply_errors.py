@@ -127,3 +127,9 @@ def test_a_tampered_lock_cannot_delete_files_outside_the_project(sample, tmp_pat
     lock.write_text(text.replace('"files": {', f'"files": {{\n    "../../victim.txt": "{digest}",', 1))
     _apply_fails(sample, "robot.lock.json is not a valid unityscaffold lock file", "Assets/")
     assert victim.read_text() == "precious\n"
+
+
+def test_binary_project_settings_are_refused(sample):
+    settings = sample / "unity" / "ProjectSettings" / "ProjectSettings.asset"
+    settings.write_bytes(b"\x00\x01binary settings\xff")
+    _apply_fails(sample, "ProjectSettings.asset is not a text (YAML) settings file", "Force Text")

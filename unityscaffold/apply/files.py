@@ -142,6 +142,14 @@ def write_files(changes: Sequence[FileChange]) -> list[Path]:
         if isinstance(exc, OSError):
             raise UserError(f"cannot write {exc.filename or 'output'}: {exc.strerror}") from None
         raise
-    for temp, path in temps:
-        os.replace(temp, path)
+    for done, (temp, path) in enumerate(temps):
+        try:
+            os.replace(temp, path)
+        except OSError as exc:
+            for leftover, _ in temps[done:]:
+                leftover.unlink(missing_ok=True)
+            raise UserError(f"cannot replace {path}: {exc.strerror}; {done} of {len(temps)} "
+                            "files were already written",
+                            hint="fix the cause (a file locked by another program?) and run "
+                            "again: unchanged files are skipped") from None
     return [path for _, path in temps]

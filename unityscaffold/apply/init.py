@@ -21,7 +21,7 @@ __all__ = ["MAIN_SCENE", "init_project"]
 
 MAIN_SCENE = "Assets/Scenes/Main.unity"
 _TEMPLATE_ROOT = "unity_project"
-_RENAMES = {"gitignore": ".gitignore"}
+_RENAMES = {"gitignore": ".gitignore", "gitattributes": ".gitattributes"}
 
 
 def _template_files(context: dict[str, str]) -> list[tuple[str, bytes]]:

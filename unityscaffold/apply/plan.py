@@ -62,6 +62,12 @@ def _settings_change(manifest: Manifest) -> list[DesiredFile]:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
         return []
+    except (OSError, UnicodeDecodeError):
+        text = ""
+    if not text.startswith("%YAML"):
+        raise UserError(f"{path} is not a text (YAML) settings file",
+                        hint="set Edit > Project Settings > Editor > Asset Serialization Mode to "
+                        "'Force Text'; apply keeps the ROS2 define there in line with `ros`")
     wanted = with_ros_define(text, manifest.ros is Dialect.ROS2)
     return [DesiredFile(path, wanted.encode("utf-8"))] if wanted != text else []
 
