@@ -198,6 +198,9 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
         item = script.item
         if item.scene != plan.relative:
             continue
+        if connector_id == 0:
+            plan.actions.append(f"note: {script.view.class_name}'s Connector stays empty (the "
+                                "RosConnector is in another scene); it finds one at runtime")
         fields = [("Connector", ObjectRef(connector_id)), *script.view.serialized_fields()]
         ref = ScriptRef(script.guid, class_name=script.view.class_name,
                         namespace=script.view.namespace)
