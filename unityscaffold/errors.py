@@ -126,6 +126,13 @@ class LocatedError(UserError):
     ) -> LocatedError:
         return cls([Diagnostic(location, message, expected=expected, hint=hint)])
 
+    @classmethod
+    def wrap(cls, location: SourceLocation, error: UserError) -> LocatedError:
+        """``error`` located at ``location``, unless it already points at its own place."""
+        if isinstance(error, LocatedError):
+            return error
+        return cls.at(location, error.message, hint=error.hint)
+
     @property
     def location(self) -> SourceLocation:
         return self.diagnostics[0].location

@@ -57,10 +57,8 @@ def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSp
     where = item.locations.of("type")
     try:
         found = registry.get(item.type)
-    except LocatedError:
-        raise
     except UserError as error:
-        raise LocatedError.at(where, error.message, hint=error.hint) from None
+        raise LocatedError.wrap(where, error) from None
     if not isinstance(found, kind):
         wanted = "a message" if kind is MessageSpec else "a service"
         raise LocatedError.at(where, f"'{item.type}' is a {found.kind.value}, not {wanted}",
@@ -86,10 +84,6 @@ def _view(manifest: Manifest, item: Topic | Service, spec: MessageSpec | Service
                 response_type=classes["response"].qualified)
 
 
-def _asset(manifest: Manifest, path: Path) -> str:
-    return path.relative_to(manifest.project_root).as_posix()
-
-
 def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[DesiredFile]:
     assets = manifest.project_root / "Assets"
     metas = []
@@ -97,7 +91,7 @@ def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[Des
         if folder == assets or assets not in folder.parents:
             continue
         meta = folder.with_name(folder.name + ".meta")
-        guid = meta_guid(meta, salt, _asset(manifest, folder))
+        guid = meta_guid(meta, salt, manifest.asset_path(folder))
         metas.append(DesiredFile(meta, folder_meta(guid).encode(), create_only=True))
     return metas
 
@@ -105,7 +99,7 @@ def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[Des
 def _check_class_names(manifest: Manifest, scripts: dict[str, ScriptInfo]) -> None:
     """A generated script must not share its class name with ROS#'s or another script's:
     Unity and the manifest's ``components`` find scripts by that name."""
-    ours = (manifest.output_dir / "Scripts").relative_to(manifest.project_root).as_posix()
+    ours = manifest.asset_path(manifest.output_dir / "Scripts")
     elsewhere = {info.class_name: info.path for info in scripts.values()
                  if not info.path.startswith(ours + "/")}
     for item in (*manifest.topics, *manifest.services):
@@ -137,9 +131,9 @@ def plan_code(manifest: Manifest, registry: Registry, salt: str,
         view = _view(manifest, item, spec, generation)
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
-        guid = meta_guid(path.with_name(path.name + ".meta"), salt, _asset(manifest, path))
+        guid = meta_guid(path.with_name(path.name + ".meta"), salt, manifest.asset_path(path))
         user_guid = meta_guid(user_path.with_name(user_path.name + ".meta"), salt,
-                              _asset(manifest, user_path))
+                              manifest.asset_path(user_path))
         generated.append(DesiredFile(path, rendered.plumbing.encode()))
         created_once += [
             DesiredFile(user_path, rendered.user.encode(), create_only=True),

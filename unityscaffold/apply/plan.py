@@ -72,10 +72,6 @@ def _settings_change(manifest: Manifest) -> list[DesiredFile]:
     return [DesiredFile(path, wanted.encode("utf-8"))] if wanted != text else []
 
 
-def _relative(manifest: Manifest, path: Path) -> str:
-    return path.relative_to(manifest.project_root).as_posix()
-
-
 def _conflicts(manifest: Manifest, generated: list[DesiredFile], lock: LockFile) -> list[str]:
     """Generated files someone edited by hand since apply last wrote them."""
     found = []
@@ -86,9 +82,9 @@ def _conflicts(manifest: Manifest, generated: list[DesiredFile], lock: LockFile)
             continue
         if current == want.content:
             continue
-        recorded = lock.files.get(_relative(manifest, want.path))
+        recorded = lock.files.get(manifest.asset_path(want.path))
         if recorded != sha256(current):
-            found.append(_relative(manifest, want.path))
+            found.append(manifest.asset_path(want.path))
     return found
 
 
@@ -128,12 +124,12 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
     desired += user.desired + _settings_change(manifest)
     desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
 
-    pruning = plan_pruning(manifest, lock, {_relative(manifest, d.path) for d in desired})
+    pruning = plan_pruning(manifest, lock, {manifest.asset_path(d.path) for d in desired})
     deletions = pruning.deletions
     notes = user.notes + pruning.notes
     new_lock = LockFile(
         files={**pruning.kept_files,
-               **{_relative(manifest, d.path): sha256(d.content) for d in generated}},
+               **{manifest.asset_path(d.path): sha256(d.content) for d in generated}},
         user_files={**pruning.kept_user_files, **user.digests},
         components=tuple(sorted({c for s in scenes for c in s.components})),
     )

@@ -43,12 +43,6 @@ class ScenePlan:
         return self.before != self.after
 
 
-def _located(where: SourceLocation, error: UserError) -> LocatedError:
-    if isinstance(error, LocatedError):
-        return error
-    return LocatedError.at(where, error.message, hint=error.hint)
-
-
 class _SceneEditor:
     """Applies the desired components to one loaded scene, recording what it did."""
 
@@ -62,7 +56,7 @@ class _SceneEditor:
         try:
             return self.doc.ensure_gameobject(path, create=create)
         except UserError as error:
-            raise _located(where, error) from None
+            raise LocatedError.wrap(where, error) from None
 
     def attach(self, path: str, create: bool, script: ScriptRef, fields: list[tuple[str, FieldValue]],
                where: SourceLocation, source: str):
@@ -73,7 +67,7 @@ class _SceneEditor:
         try:
             component = self.doc.ensure_component(go, script, fields)
         except UserError as error:
-            raise _located(where, error) from None
+            raise LocatedError.wrap(where, error) from None
         name = script.class_name or script.guid
         if not existed:
             self.plan.actions.append(f"add {name} to {path}")
@@ -141,7 +135,7 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
         if found is None and ctx.rossharp.knows(item.script):
             found = ctx.rossharp.script(item.script)
     except UserError as error:
-        raise _located(where, error) from None
+        raise LocatedError.wrap(where, error) from None
     if found is None:
         names = sorted({info.class_name for info in ctx.scripts.values()})
         close = difflib.get_close_matches(item.script, names, n=3)
@@ -156,7 +150,7 @@ def _reference(ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath,
     try:
         go = doc.find_gameobject(value.path)
     except UserError as error:
-        raise _located(where, error) from None
+        raise LocatedError.wrap(where, error) from None
     wanted = value.component or ("Transform" if name.lower().endswith("transform") else None)
     if wanted is None:
         return ObjectRef(go.file_id)
@@ -231,7 +225,7 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
     try:
         return SceneDocument.load(path)
     except UserError as error:
-        raise _located(where, error) from None
+        raise LocatedError.wrap(where, error) from None
 
 
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
@@ -263,7 +257,7 @@ def plan_scenes(manifest: Manifest, code: CodePlan, rossharp: RosSharp,
         try:
             _edit_scene(ctx, plan, doc, lock)
         except UserError as error:
-            raise _located(locations[relative], error) from None
+            raise LocatedError.wrap(locations[relative], error) from None
         problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
         if problems:
             raise LocatedError(problems)

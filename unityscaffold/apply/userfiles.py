@@ -39,7 +39,7 @@ def plan_user_files(manifest: Manifest, code: CodePlan, lock: LockFile) -> UserF
     result = UserFiles()
     initial = {d.path: d.content for d in code.created_once}
     for script in code.scripts:
-        relative = script.user_path.relative_to(manifest.project_root).as_posix()
+        relative = manifest.asset_path(script.user_path)
         fresh = initial[script.user_path]
         recorded = lock.user_files.get(relative)
         try:

@@ -235,7 +235,11 @@ class Manifest:
     @property
     def output(self) -> str:
         """The output folder relative to the project root, POSIX style."""
-        return self.output_dir.relative_to(self.project_root).as_posix()
+        return self.asset_path(self.output_dir)
+
+    def asset_path(self, path: Path) -> str:
+        """A path inside the project as Unity names assets: relative to the root, POSIX style."""
+        return path.relative_to(self.project_root).as_posix()
 
     def scene_path(self, scene: str) -> Path:
         """The absolute path of a project-relative scene such as ``topic.scene``."""
