@@ -31,8 +31,10 @@ def reset_to_clean(project: Path) -> None:
 
 def timed_apply(project: Path) -> float:
     start = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "unityscaffold", "apply", "--quiet",
-                    str(project / "robot.yaml")], check=True)
+    subprocess.run(
+        [sys.executable, "-m", "unityscaffold", "apply", "--quiet", str(project / "robot.yaml")],
+        check=True,
+    )
     return time.perf_counter() - start
 
 
@@ -52,8 +54,10 @@ def main() -> None:
     subprocess.run([sys.executable, "-c", "pass"], check=True)
     bare = time.perf_counter() - start
     for label, times, aim in (("apply from clean", clean, 1.0), ("no-op re-apply", noop, 0.4)):
-        print(f"{label:<18} best {min(times) * 1000:6.0f} ms  median "
-              f"{statistics.median(times) * 1000:6.0f} ms  (aim < {aim * 1000:.0f} ms)")
+        print(
+            f"{label:<18} best {min(times) * 1000:6.0f} ms  median "
+            f"{statistics.median(times) * 1000:6.0f} ms  (aim < {aim * 1000:.0f} ms)"
+        )
     print(f"{'bare python start':<18} {bare * 1000:6.0f} ms  (for reference)")
 
 

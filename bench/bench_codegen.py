@@ -23,8 +23,9 @@ from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 
 
-def _run(dialect: Dialect, registry: Registry | None, out: Path
-         ) -> tuple[Registry, int, int, float, float]:
+def _run(
+    dialect: Dialect, registry: Registry | None, out: Path
+) -> tuple[Registry, int, int, float, float]:
     start = time.perf_counter()
     if registry is None:
         registry = Registry.load(dialect)
@@ -55,11 +56,13 @@ def main() -> None:
             rewritten = max(r[2] for r in warm_runs)
             totals["cold"] += cold
             totals["warm"] += warm
-            print(f"{dialect.label}: {classes} classes; cold {cold * 1000:.0f} ms "
-                  f"({cold / classes * 1e6:.0f} us/class, {files} files written incl. .meta), "
-                  f"warm {warm * 1000:.0f} ms ({warm / classes * 1e6:.0f} us/class, "
-                  f"{rewritten} files written); generation alone: cold {cold_gen * 1000:.0f} ms, "
-                  f"warm {warm_gen * 1000:.0f} ms")
+            print(
+                f"{dialect.label}: {classes} classes; cold {cold * 1000:.0f} ms "
+                f"({cold / classes * 1e6:.0f} us/class, {files} files written incl. .meta), "
+                f"warm {warm * 1000:.0f} ms ({warm / classes * 1e6:.0f} us/class, "
+                f"{rewritten} files written); generation alone: cold {cold_gen * 1000:.0f} ms, "
+                f"warm {warm_gen * 1000:.0f} ms"
+            )
         print(", ".join(f"{k} {v * 1000:.0f} ms" for k, v in totals.items()).join(("total: ", "")))
 
 

@@ -23,7 +23,9 @@ ROS2_SHARE = Path(sys.prefix) / "share"
 
 
 def ros1_round() -> int:
-    packages = sorted({p.parent for kind in ("msg", "srv", "action") for p in ROS1_SHARE.glob(f"*/{kind}")})
+    packages = sorted(
+        {p.parent for kind in ("msg", "srv", "action") for p in ROS1_SHARE.glob(f"*/{kind}")}
+    )
     registry = Registry.load(Dialect.ROS1, packages, use_environment=False, use_builtin=False)
     identity = Ros1Identity(registry)
     interfaces, problems = registry.parse_all()
@@ -37,8 +39,11 @@ def ros1_round() -> int:
 
 
 def ros2_round() -> int:
-    packages = sorted(p.parent for p in ROS2_SHARE.glob("*/package.xml")
-                      if any((p.parent / k).is_dir() for k in ("msg", "srv", "action")))
+    packages = sorted(
+        p.parent
+        for p in ROS2_SHARE.glob("*/package.xml")
+        if any((p.parent / k).is_dir() for k in ("msg", "srv", "action"))
+    )
     registry = Registry.load(Dialect.ROS2, packages, use_environment=False, use_builtin=False)
     identity = Ros2Identity(registry)
     interfaces, problems = registry.parse_all()
@@ -55,8 +60,10 @@ def measure(label: str, work, rounds: int) -> float:
         count = work()
         times.append(time.perf_counter() - start)
     best, median = min(times), statistics.median(times)
-    print(f"{label:<28} {count:4d} types  best {best * 1000:7.1f} ms  median {median * 1000:7.1f} ms"
-          f"  ({median / count * 1e6:6.1f} µs/type)")
+    print(
+        f"{label:<28} {count:4d} types  best {best * 1000:7.1f} ms  median {median * 1000:7.1f} ms"
+        f"  ({median / count * 1e6:6.1f} µs/type)"
+    )
     return median
 
 

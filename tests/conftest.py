@@ -30,23 +30,30 @@ def mcs() -> str:
 
 @pytest.fixture(scope="session")
 def ros1_share() -> Path:
-    require((ROS1_SHARE / "std_msgs" / "msg").is_dir() and (ROS1_SHARE / "std_srvs" / "srv").is_dir(),
-            "Debian's ROS 1 interface packages (ros-*-msgs, ros-std-srvs)")
+    require(
+        (ROS1_SHARE / "std_msgs" / "msg").is_dir() and (ROS1_SHARE / "std_srvs" / "srv").is_dir(),
+        "Debian's ROS 1 interface packages (ros-*-msgs, ros-std-srvs)",
+    )
     return ROS1_SHARE
 
 
 @pytest.fixture(scope="session")
 def ros2_share() -> Path:
-    require((ROS2_SHARE / "test_msgs" / "msg").is_dir()
-            and (ROS2_SHARE / "std_msgs" / "msg").is_dir(),
-            "the ROS 2 Jazzy interface wheels (ros-jazzy-common-interfaces, ros-jazzy-test-msgs)")
+    require(
+        (ROS2_SHARE / "test_msgs" / "msg").is_dir() and (ROS2_SHARE / "std_msgs" / "msg").is_dir(),
+        "the ROS 2 Jazzy interface wheels (ros-jazzy-common-interfaces, ros-jazzy-test-msgs)",
+    )
     return ROS2_SHARE
 
 
 @pytest.fixture(scope="session")
 def genmsg_python() -> Path:
-    works = SYSTEM_PYTHON.exists() and subprocess.run(
-        [str(SYSTEM_PYTHON), "-c", "import genmsg"], capture_output=True
-    ).returncode == 0
+    works = (
+        SYSTEM_PYTHON.exists()
+        and subprocess.run(
+            [str(SYSTEM_PYTHON), "-c", "import genmsg"], capture_output=True
+        ).returncode
+        == 0
+    )
     require(works, "Debian's python3-genmsg under /usr/bin/python3")
     return SYSTEM_PYTHON

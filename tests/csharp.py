@@ -16,10 +16,18 @@ from unityscaffold.manifest import load_manifest
 
 REPO = Path(__file__).resolve().parent.parent
 ROSSHARP_STUB = REPO / "tests" / "codegen" / "stubs" / "RosSharpStub.cs"
-UNITY_STUBS = (REPO / "tests" / "apply" / "stubs" / "UnityEngine.cs",
-               REPO / "tests" / "apply" / "stubs" / "RosSharpRuntime.cs")
-MCS_FLAGS = ("-langversion:7.2", "-target:library", "-warnaserror+", "-warn:4", "-nowarn:1591",
-             "-nologo")
+UNITY_STUBS = (
+    REPO / "tests" / "apply" / "stubs" / "UnityEngine.cs",
+    REPO / "tests" / "apply" / "stubs" / "RosSharpRuntime.cs",
+)
+MCS_FLAGS = (
+    "-langversion:7.2",
+    "-target:library",
+    "-warnaserror+",
+    "-warn:4",
+    "-nowarn:1591",
+    "-nologo",
+)
 
 
 @dataclass(frozen=True)
@@ -33,8 +41,9 @@ class Compiled:
         assert "warning" not in self.output, self.output
 
 
-def compile_cs(mcs: str, sources: list[Path], out: Path, *, ros2: bool,
-               references: tuple[Path, ...] = ()) -> Compiled:
+def compile_cs(
+    mcs: str, sources: list[Path], out: Path, *, ros2: bool, references: tuple[Path, ...] = ()
+) -> Compiled:
     args = [mcs, *MCS_FLAGS, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
     if ros2:
         args.append("-define:ROS2")
@@ -57,8 +66,11 @@ def _runtime_assembly(mcs: str, manifest_path: Path, out: Path, engine: Path) ->
     registry = load_registry(manifest, use_environment=False)
     roots = [registry.get(item.type) for item in (*manifest.topics, *manifest.services)]
     # ROS#'s action base classes use the goal status classes it ships.
-    status_types = (("action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus") if manifest.ros == 2
-                    else ("actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"))
+    status_types = (
+        ("action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus")
+        if manifest.ros == 2
+        else ("actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus")
+    )
     runtime_roots = roots + [registry.get(name) for name in status_types]
     everything = generate(registry, runtime_roots, Options(manifest.ros, include_shipped=True))
     ours = generate(registry, roots, Options(manifest.ros))
@@ -70,8 +82,9 @@ def _runtime_assembly(mcs: str, manifest_path: Path, out: Path, engine: Path) ->
             path.parent.mkdir(parents=True, exist_ok=True)
             path.write_text(file.text, encoding="utf-8")
             sources.append(path)
-    compiled = compile_cs(mcs, sources, out / "RosSharp.dll", ros2=manifest.ros == 2,
-                          references=(engine,))
+    compiled = compile_cs(
+        mcs, sources, out / "RosSharp.dll", ros2=manifest.ros == 2, references=(engine,)
+    )
     compiled.assert_clean()
     return compiled.assembly
 
@@ -84,6 +97,7 @@ def compile_applied_project(mcs: str, manifest_path: Path, out: Path, *, ros2: b
     project = load_manifest(manifest_path).output_dir
     sources = sorted(project.rglob("*.cs"))
     assert any(p.name.endswith(".User.cs") for p in sources)
-    compiled = compile_cs(mcs, sources, out / "Assembly-CSharp.dll", ros2=ros2,
-                          references=(engine, runtime))
+    compiled = compile_cs(
+        mcs, sources, out / "Assembly-CSharp.dll", ros2=ros2, references=(engine, runtime)
+    )
     compiled.assert_clean()

@@ -29,13 +29,16 @@ def _apply(project: Path, body: str):
 
 
 def test_a_stock_subscriber_gets_its_required_ros_connector_and_a_rerun_is_a_no_op(project):
-    run = _apply(project, """\
+    run = _apply(
+        project,
+        """\
 components:
   - script: TwistSubscriber
     gameobject: Robot
     create: true
     fields: {Topic: /cmd_vel_unity, SubscribedTransform: "@Robot"}
-""")
+""",
+    )
     assert run.code == 0, run.err
     assert "add RosConnector to Robot" in run.out and "add TwistSubscriber to Robot" in run.out
     scene = (project / "Assets" / "Scenes" / "Main.unity").read_text()
@@ -45,37 +48,49 @@ components:
 
 
 def test_a_component_may_refer_to_a_generated_script_on_the_first_run(project):
-    run = _apply(project, """\
+    run = _apply(
+        project,
+        """\
 topics:
   - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, gameobject: Robot}
 components:
   - script: TwistSubscriber
     gameobject: Robot
     fields: {Topic: /twist, SubscribedTransform: "@Robot:OdomSubscriber"}
-""")
+""",
+    )
     assert run.code == 0, run.err
     assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
 
 
 def test_a_generated_name_that_clashes_with_ros_sharps_scripts_is_refused(project):
-    run = _apply(project, """\
+    run = _apply(
+        project,
+        """\
 topics:
   - {name: /odometry, type: nav_msgs/Odometry, direction: subscribe}
-""")
+""",
+    )
     assert run.code == 2
     assert "robot.yaml:7:" in run.err and "OdometrySubscriber" in run.err
     assert "class:" in run.err
-    renamed = _apply(project, """\
+    renamed = _apply(
+        project,
+        """\
 topics:
   - {name: /odometry, type: nav_msgs/Odometry, direction: subscribe, class: OdomListener}
-""")
+""",
+    )
     assert renamed.code == 0, renamed.err
 
 
 def test_a_missing_gameobject_without_creation_says_how_to_create_it(project):
-    run = _apply(project, """\
+    run = _apply(
+        project,
+        """\
 components:
   - {script: TwistSubscriber, gameobject: Nowhere, create: false}
-""")
+""",
+    )
     assert run.code == 2
     assert "no GameObject named 'Nowhere'" in run.err and "`create: true`" in run.err

@@ -30,7 +30,8 @@ def _project(tmp_path: Path, corpus_file: Path, ros: int, connector: str) -> Pat
     assert run_cli("init", str(project), "--ros", str(ros)).code == 0
     shutil.copy(corpus_file, project / "Assets" / "Scenes" / corpus_file.name)
     (project / "robot.yaml").write_text(
-        MANIFEST.format(ros=ros, scene=corpus_file.name, connector=connector))
+        MANIFEST.format(ros=ros, scene=corpus_file.name, connector=connector)
+    )
     return project
 
 
@@ -46,7 +47,9 @@ def _documents(text: str) -> set[str]:
         (CORPUS / "unity-robotics-hub" / "DemoScene.unity", 1, "RosConnector"),
     ],
 )
-def test_apply_on_a_real_scene_keeps_every_untouched_document(tmp_path, corpus_file, ros, connector):
+def test_apply_on_a_real_scene_keeps_every_untouched_document(
+    tmp_path, corpus_file, ros, connector
+):
     project = _project(tmp_path, corpus_file, ros, connector)
     original = corpus_file.read_text()
     first = run_cli("apply", str(project / "robot.yaml"))

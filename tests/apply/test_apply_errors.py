@@ -38,8 +38,12 @@ def _edit(sample: Path, old: str, new: str) -> None:
 
 def test_unknown_type_points_at_the_manifest_and_suggests(sample):
     _edit(sample, "type: nav_msgs/Odometry", "type: nav_msgs/Odometri")
-    _apply_fails(sample, "robot.yaml:19:", "unknown ROS 1 type 'nav_msgs/Odometri'",
-                 "did you mean nav_msgs/Odometry")
+    _apply_fails(
+        sample,
+        "robot.yaml:19:",
+        "unknown ROS 1 type 'nav_msgs/Odometri'",
+        "did you mean nav_msgs/Odometry",
+    )
 
 
 def test_a_service_type_on_a_topic_is_refused(sample):
@@ -124,7 +128,9 @@ def test_a_tampered_lock_cannot_delete_files_outside_the_project(sample, tmp_pat
     lock = sample / "robot.lock.json"
     text = lock.read_text()
     digest = __import__("hashlib").sha256(b"precious\n").hexdigest()
-    lock.write_text(text.replace('"files": {', f'"files": {{\n    "../../victim.txt": "{digest}",', 1))
+    lock.write_text(
+        text.replace('"files": {', f'"files": {{\n    "../../victim.txt": "{digest}",', 1)
+    )
     _apply_fails(sample, "robot.lock.json is not a valid unityscaffold lock file", "Assets/")
     assert victim.read_text() == "precious\n"
 

@@ -33,8 +33,10 @@ def test_apply_from_clean_writes_what_the_manifest_asks_and_a_second_run_writes_
     shutil.rmtree(sample / "unity" / "Assets" / "RosGenerated")
     (sample / "unity" / "Assets" / "RosGenerated.meta").unlink()
     (sample / "robot.lock.json").unlink()
-    shutil.copy(REPO / "templates" / "unity_project" / "Assets" / "Scenes" / "Main.unity",
-                sample / "unity" / "Assets" / "Scenes" / "Main.unity")
+    shutil.copy(
+        REPO / "templates" / "unity_project" / "Assets" / "Scenes" / "Main.unity",
+        sample / "unity" / "Assets" / "Scenes" / "Main.unity",
+    )
     first = run_cli("apply", str(sample / "robot.yaml"))
     assert first.code == 0, first.err
     assert "add CmdVelPublisher to Robot" in first.out
@@ -75,12 +77,14 @@ def test_removing_a_topic_prunes_its_files_and_component_but_not_edited_user_cod
     manifest = sample / "robot.yaml"
     scripts = sample / "unity" / "Assets" / "RosGenerated" / "Scripts"
     user_scan = scripts / "ScanSubscriber.User.cs"
-    user_scan.write_text(user_scan.read_text().replace("// Runs on", "Debug.Log(message); // Runs on"))
+    user_scan.write_text(
+        user_scan.read_text().replace("// Runs on", "Debug.Log(message); // Runs on")
+    )
     text = manifest.read_text()
     for topic in ("/scan", "/odom"):
         start = text.index(f"  - {{name: {topic},")
         end = text.index("\n  - ", start + 1)
-        text = text[:start] + text[end + 1:]
+        text = text[:start] + text[end + 1 :]
     manifest.write_text(text)
     run = run_cli("apply", str(manifest))
     assert run.code == 0, run.err
@@ -116,7 +120,9 @@ def test_a_hand_edited_generated_file_stops_apply_until_forced(sample):
 
 def test_dry_run_and_plan_write_nothing(sample):
     manifest = sample / "robot.yaml"
-    manifest.write_text(manifest.read_text().replace("url: ws://localhost:9090", "url: ws://robot:9090"))
+    manifest.write_text(
+        manifest.read_text().replace("url: ws://localhost:9090", "url: ws://robot:9090")
+    )
     before = snapshot(sample)
     for args in (("plan", str(manifest)), ("apply", "--dry-run", str(manifest))):
         run = run_cli(*args)
@@ -144,7 +150,9 @@ def test_a_component_the_user_attached_is_adopted_but_never_pruned(sample):
     lock["components"] = [c for c in lock["components"] if c["source"] != "connector"]
     (sample / "robot.lock.json").write_text(json.dumps(lock, indent=2) + "\n")
     assert run_cli("apply", str(manifest)).code == 0
-    manifest.write_text(manifest.read_text().replace("gameobject: RosConnector\n", "gameobject: Bridge\n"))
+    manifest.write_text(
+        manifest.read_text().replace("gameobject: RosConnector\n", "gameobject: Bridge\n")
+    )
     run = run_cli("apply", str(manifest))
     assert run.code == 0, run.err
     assert "add RosConnector to Bridge" in run.out
@@ -157,8 +165,12 @@ def test_an_untouched_user_half_follows_a_type_change_and_an_edited_one_gets_a_n
     scripts = sample / "unity" / "Assets" / "RosGenerated" / "Scripts"
     edited = scripts / "BaseStatusSubscriber.User.cs"
     edited.write_text(edited.read_text().replace("// Runs on", "Debug.Log(message); // Runs on"))
-    text = manifest.read_text().replace("type: nav_msgs/Odometry", "type: geometry_msgs/PoseStamped")
-    manifest.write_text(text.replace("type: diffbot_msgs/BaseStatus", "type: diffbot_msgs/WheelState"))
+    text = manifest.read_text().replace(
+        "type: nav_msgs/Odometry", "type: geometry_msgs/PoseStamped"
+    )
+    manifest.write_text(
+        text.replace("type: diffbot_msgs/BaseStatus", "type: diffbot_msgs/WheelState")
+    )
     run = run_cli("apply", str(manifest))
     assert run.code == 0, run.err
     untouched = (scripts / "OdomSubscriber.User.cs").read_text()

@@ -32,12 +32,15 @@ def test_the_installed_packages_meta_wins(tmp_path):
     assert rossharp.script("RosConnector").guid == "0123456789abcdef0123456789abcdef"
 
 
-@pytest.mark.parametrize(("pin", "guid"), [
-    ("2.2.1", "ff98778ae051cfd40a6e4effdf851ebd"),
-    ("v2.2.0", "9fb7d56afaa30534e9a7dc10102f9a83"),
-    ("2.1.0", "9fb7d56afaa30534e9a7dc10102f9a83"),
-    ("2.0.0", "ff98778ae051cfd40a6e4effdf851ebd"),
-])
+@pytest.mark.parametrize(
+    ("pin", "guid"),
+    [
+        ("2.2.1", "ff98778ae051cfd40a6e4effdf851ebd"),
+        ("v2.2.0", "9fb7d56afaa30534e9a7dc10102f9a83"),
+        ("2.1.0", "9fb7d56afaa30534e9a7dc10102f9a83"),
+        ("2.0.0", "ff98778ae051cfd40a6e4effdf851ebd"),
+    ],
+)
 def test_without_the_package_on_disk_the_pinned_releases_table_is_used(tmp_path, pin, guid):
     assert _project(tmp_path, pin).script("RosConnector").guid == guid
 

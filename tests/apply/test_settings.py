@@ -19,10 +19,12 @@ def test_ros2_adds_the_define_to_an_empty_block_and_ros1_restores_it():
 def test_every_build_target_group_gets_the_define_and_others_are_kept():
     assert with_ros_define(GROUPS, True) == (
         "PlayerSettings:\n  scriptingDefineSymbols:\n    Standalone: FOO;ROS2\n"
-        "    Android: BAR;ROS2\n  other: 1\n")
+        "    Android: BAR;ROS2\n  other: 1\n"
+    )
     assert with_ros_define(GROUPS, False) == (
         "PlayerSettings:\n  scriptingDefineSymbols:\n    Standalone: FOO\n    Android: BAR\n"
-        "  other: 1\n")
+        "  other: 1\n"
+    )
 
 
 @pytest.mark.parametrize("text", [EMPTY, GROUPS])

@@ -19,8 +19,17 @@ CUSTOM = {
 
 def test_show_json_has_exactly_the_documented_keys(tmp_path):
     build_tree(tmp_path, CUSTOM)
-    run = run_cli("msgs", "show", "my_robot_msgs/Status", "my_robot_msgs/Reset", "--ros", "1",
-                  "--path", str(tmp_path / "ws"), "--json")
+    run = run_cli(
+        "msgs",
+        "show",
+        "my_robot_msgs/Status",
+        "my_robot_msgs/Reset",
+        "--ros",
+        "1",
+        "--path",
+        str(tmp_path / "ws"),
+        "--json",
+    )
     assert run.code == 0, run.err
     message, service = json.loads(run.out)
     keys = {"type", "kind", "md5sum", "definition", "fields", "constants", "source"}
@@ -39,16 +48,38 @@ def test_show_json_has_exactly_the_documented_keys(tmp_path):
 
 def test_service_halves_are_accepted_as_types(tmp_path):
     build_tree(tmp_path, CUSTOM)
-    run = run_cli("msgs", "show", "my_robot_msgs/ResetResponse", "--ros", "1", "--path",
-                  str(tmp_path / "ws"), "--json")
+    run = run_cli(
+        "msgs",
+        "show",
+        "my_robot_msgs/ResetResponse",
+        "--ros",
+        "1",
+        "--path",
+        str(tmp_path / "ws"),
+        "--json",
+    )
     assert json.loads(run.out)[0]["fields"][0]["name"] == "success"
 
 
 def test_package_name_comes_from_package_xml_not_the_folder(tmp_path):
-    build_tree(tmp_path, {"ws/folder_name/package.xml": "<package>\n  <name>real_name</name>\n</package>",
-                          "ws/folder_name/msg/A.msg": "int32 x\n"})
-    run = run_cli("msgs", "list", "--ros", "1", "--path", str(tmp_path / "ws"), "--package",
-                  "real_name", "--json")
+    build_tree(
+        tmp_path,
+        {
+            "ws/folder_name/package.xml": "<package>\n  <name>real_name</name>\n</package>",
+            "ws/folder_name/msg/A.msg": "int32 x\n",
+        },
+    )
+    run = run_cli(
+        "msgs",
+        "list",
+        "--ros",
+        "1",
+        "--path",
+        str(tmp_path / "ws"),
+        "--package",
+        "real_name",
+        "--json",
+    )
     assert run.code == 0, run.err
     assert json.loads(run.out)[0]["types"] == [{"type": "real_name/A", "kind": "msg"}]
 
@@ -62,8 +93,10 @@ def test_the_first_definition_wins_and_show_names_the_other(tmp_path):
 
 
 def test_a_malformed_file_is_located_and_does_not_hide_the_good_ones(tmp_path):
-    build_tree(tmp_path, {"ws/pkg/msg/Good.msg": "int32 x\n",
-                          "ws/pkg/msg/Bad.msg": "int32 x\nfloat64\ty\n"})
+    build_tree(
+        tmp_path,
+        {"ws/pkg/msg/Good.msg": "int32 x\n", "ws/pkg/msg/Bad.msg": "int32 x\nfloat64\ty\n"},
+    )
     run = run_cli("msgs", "list", "--ros", "1", "--path", str(tmp_path / "ws"), "--package", "pkg")
     assert run.code == 2
     assert "pkg/Good" in run.out
@@ -97,9 +130,24 @@ def test_ambiguous_name_asks_for_the_kind():
 def test_builtin_fallback_works_with_no_ros_paths_at_all(ros, tmp_path):
     """A separate process with an empty environment and --no-env: only the built-in definitions."""
     env = {"PATH": os.environ["PATH"], "HOME": str(tmp_path)}
-    done = subprocess.run([sys.executable, "-m", "unityscaffold", "msgs", "show", "sensor_msgs/Imu",
-                           "--ros", ros, "--no-env", "--json"],
-                          capture_output=True, text=True, env=env, timeout=60)
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "unityscaffold",
+            "msgs",
+            "show",
+            "sensor_msgs/Imu",
+            "--ros",
+            ros,
+            "--no-env",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=60,
+    )
     assert done.returncode == 0, done.stderr
     (shown,) = json.loads(done.stdout)
     assert "/builtin/ros" in shown["source"]
@@ -119,8 +167,9 @@ def test_missing_path_is_a_user_error(tmp_path):
     assert run.code == 2 and "interface folder not found" in run.err
 
 
-@pytest.mark.parametrize("args", [("msgs", "show"), ("apply", "--no-such-option"), ("msgs", "frob"),
-                                  ("init",)])
+@pytest.mark.parametrize(
+    "args", [("msgs", "show"), ("apply", "--no-such-option"), ("msgs", "frob"), ("init",)]
+)
 def test_usage_errors_exit_2_without_a_traceback(args):
     run = run_cli(*args)
     assert run.code == 2

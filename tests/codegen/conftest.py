@@ -20,6 +20,8 @@ HERE = Path(__file__).resolve().parent
 DATA = HERE / "data"
 STUB = HERE / "stubs" / "RosSharpStub.cs"
 GOLDEN = HERE / "golden"
+
+
 def write_tree(generation: Generation, out: Path) -> list[Path]:
     paths = []
     for file in generation.files:
@@ -45,8 +47,9 @@ def generate_data(dialect: Dialect, names: list[str], **options: object) -> Gene
 
 
 @pytest.fixture(scope="session")
-def compiled_all_ros1(mcs: str, ros1_share: Path, tmp_path_factory: pytest.TempPathFactory
-                      ) -> tuple[Generation, Compiled]:
+def compiled_all_ros1(
+    mcs: str, ros1_share: Path, tmp_path_factory: pytest.TempPathFactory
+) -> tuple[Generation, Compiled]:
     out = tmp_path_factory.mktemp("all_ros1")
     generation = generate_all(Dialect.ROS1, include_shipped=True)
     sources = [STUB, *write_tree(generation, out / "src")]
@@ -54,8 +57,9 @@ def compiled_all_ros1(mcs: str, ros1_share: Path, tmp_path_factory: pytest.TempP
 
 
 @pytest.fixture(scope="session")
-def compiled_all_ros2(mcs: str, ros2_share: Path, tmp_path_factory: pytest.TempPathFactory
-                      ) -> tuple[Generation, Compiled]:
+def compiled_all_ros2(
+    mcs: str, ros2_share: Path, tmp_path_factory: pytest.TempPathFactory
+) -> tuple[Generation, Compiled]:
     out = tmp_path_factory.mktemp("all_ros2")
     generation = generate_all(Dialect.ROS2, include_shipped=True)
     sources = [STUB, *write_tree(generation, out / "src")]

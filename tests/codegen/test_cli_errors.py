@@ -22,12 +22,15 @@ BAD = DATA / "bad" / "ros1"
         (["class_member_msgs/Speed"], "'Speed' has the same C# name as the class"),
         (["--namespace", "My.class.Ns", "class_member_msgs"], "not a C# namespace name"),
         ([], "no types given"),
-        (["clash_msgs/Thing", "clash_actions/Thing"],
-         "would both become C# class RosSharp.RosBridgeClient.MessageTypes.Clash.Thing"),
+        (
+            ["clash_msgs/Thing", "clash_actions/Thing"],
+            "would both become C# class RosSharp.RosBridgeClient.MessageTypes.Clash.Thing",
+        ),
     ],
 )
 def test_bad_input_exits_2_with_a_message_and_writes_nothing(
-        args: list[str], message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    args: list[str], message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     out = tmp_path / "out"
     code = main(["msgs", "gen", "--ros", "1", "--path", str(BAD), "--out", str(out), *args])
     captured = capsys.readouterr()
@@ -37,12 +40,24 @@ def test_bad_input_exits_2_with_a_message_and_writes_nothing(
     assert not out.exists()
 
 
-def test_output_folder_that_is_a_file_is_refused(tmp_path: Path,
-                                                 capsys: pytest.CaptureFixture[str]) -> None:
+def test_output_folder_that_is_a_file_is_refused(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     out = tmp_path / "out"
     out.write_text("not a folder")
-    code = main(["msgs", "gen", "--ros", "1", "--path", str(DATA / "ros1"), "--out", str(out),
-                 "scaffold_test_msgs/Range"])
+    code = main(
+        [
+            "msgs",
+            "gen",
+            "--ros",
+            "1",
+            "--path",
+            str(DATA / "ros1"),
+            "--out",
+            str(out),
+            "scaffold_test_msgs/Range",
+        ]
+    )
     err = capsys.readouterr().err
     assert code == 2
     assert "exists and is not a folder" in err
@@ -51,21 +66,45 @@ def test_output_folder_that_is_a_file_is_refused(tmp_path: Path,
 
 
 def test_a_file_blocking_a_package_folder_leaves_nothing_half_written(
-        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     out = tmp_path / "out"
     out.mkdir()
     (out / "ScaffoldTest").write_text("in the way")
-    code = main(["msgs", "gen", "--ros", "1", "--path", str(DATA / "ros1"), "--out", str(out),
-                 "--include-shipped", "scaffold_test_msgs/Kitchen"])
+    code = main(
+        [
+            "msgs",
+            "gen",
+            "--ros",
+            "1",
+            "--path",
+            str(DATA / "ros1"),
+            "--out",
+            str(out),
+            "--include-shipped",
+            "scaffold_test_msgs/Kitchen",
+        ]
+    )
     assert code == 2
     assert "is not a folder" in capsys.readouterr().err
     assert sorted(p.name for p in out.iterdir()) == ["ScaffoldTest"]
 
 
 def test_second_run_writes_nothing_and_reports_skipped_types(
-        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    args = ["msgs", "gen", "--ros", "1", "--path", str(DATA / "ros1"), "--out",
-            str(tmp_path / "out"), "scaffold_test_msgs/Range", "geometry_msgs/PoseStamped"]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    args = [
+        "msgs",
+        "gen",
+        "--ros",
+        "1",
+        "--path",
+        str(DATA / "ros1"),
+        "--out",
+        str(tmp_path / "out"),
+        "scaffold_test_msgs/Range",
+        "geometry_msgs/PoseStamped",
+    ]
     assert main(args) == 0
     first = capsys.readouterr().out
     assert "create    ScaffoldTest/msg/Range.cs" in first

@@ -11,7 +11,8 @@ from unityscaffold.interfaces.model import Dialect
 
 
 def test_all_debian_ros1_types_compile_without_ros2_define(
-        compiled_all_ros1: tuple[Generation, Compiled]) -> None:
+    compiled_all_ros1: tuple[Generation, Compiled],
+) -> None:
     generation, compiled = compiled_all_ros1
     compiled.assert_clean()
     assert len(generation.files) > 200
@@ -19,44 +20,59 @@ def test_all_debian_ros1_types_compile_without_ros2_define(
 
 
 def test_all_jazzy_interfaces_compile_with_ros2_define(
-        compiled_all_ros2: tuple[Generation, Compiled]) -> None:
+    compiled_all_ros2: tuple[Generation, Compiled],
+) -> None:
     generation, compiled = compiled_all_ros2
     compiled.assert_clean()
     paths = {f.path for f in generation.files}
-    assert {"Test/msg/Arrays.cs", "Test/action/FibonacciActionGoal.cs",
-            "BuiltinInterfaces/msg/Time.cs", "Std/srv/SetBoolRequest.cs"} <= paths
+    assert {
+        "Test/msg/Arrays.cs",
+        "Test/action/FibonacciActionGoal.cs",
+        "BuiltinInterfaces/msg/Time.cs",
+        "Std/srv/SetBoolRequest.cs",
+    } <= paths
     assert not generation.skipped
 
 
-def _custom(mcs: str, tmp: Path, dialect: Dialect, runtime: Compiled,
-            **options: object) -> Compiled:
+def _custom(
+    mcs: str, tmp: Path, dialect: Dialect, runtime: Compiled, **options: object
+) -> Compiled:
     names = ["scaffold_test_msgs/Kitchen", "scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"]
     generation = generate_data(dialect, names, **options)
     assert all(f.path.startswith("ScaffoldTest/") for f in generation.files)
     sources = write_tree(generation, tmp / "src")
-    return compile_cs(mcs, sources, tmp / "Custom.dll", ros2=dialect is Dialect.ROS2,
-                      references=(runtime.assembly,))
+    return compile_cs(
+        mcs,
+        sources,
+        tmp / "Custom.dll",
+        ros2=dialect is Dialect.ROS2,
+        references=(runtime.assembly,),
+    )
 
 
 def test_custom_ros1_package_compiles_against_shipped_classes_in_another_assembly(
-        mcs: str, tmp_path: Path, runtime_ros1: Compiled) -> None:
+    mcs: str, tmp_path: Path, runtime_ros1: Compiled
+) -> None:
     _custom(mcs, tmp_path, Dialect.ROS1, runtime_ros1).assert_clean()
 
 
 def test_custom_ros2_package_compiles_against_shipped_classes_in_another_assembly(
-        mcs: str, tmp_path: Path, runtime_ros2: Compiled) -> None:
+    mcs: str, tmp_path: Path, runtime_ros2: Compiled
+) -> None:
     _custom(mcs, tmp_path, Dialect.ROS2, runtime_ros2).assert_clean()
 
 
 def test_another_root_namespace_generates_everything_and_compiles_beside_rossharp(
-        mcs: str, tmp_path: Path, runtime_ros1: Compiled) -> None:
+    mcs: str, tmp_path: Path, runtime_ros1: Compiled
+) -> None:
     names = ["scaffold_test_msgs/Kitchen", "scaffold_test_msgs/Cook"]
     generation = generate_data(Dialect.ROS1, names, namespace="MyRobot.Messages")
     assert "Geometry/msg/Pose.cs" in {f.path for f in generation.files}
     assert not generation.skipped
     sources = write_tree(generation, tmp_path / "src")
-    compile_cs(mcs, sources, tmp_path / "Ns.dll", ros2=False,
-               references=(runtime_ros1.assembly,)).assert_clean()
+    compile_cs(
+        mcs, sources, tmp_path / "Ns.dll", ros2=False, references=(runtime_ros1.assembly,)
+    ).assert_clean()
 
 
 def test_the_compiler_check_can_fail(mcs: str, tmp_path: Path) -> None:

@@ -12,11 +12,29 @@ from conftest import DATA
 
 def _run(seed: str, out: Path) -> dict[str, bytes]:
     env = {**os.environ, "PYTHONHASHSEED": seed}
-    code = ("from unityscaffold.cli import main; import sys; sys.exit(main(sys.argv[1:]))")
-    subprocess.run([sys.executable, "-c", code, "msgs", "gen", "--ros", "2", "--path",
-                    str(DATA / "ros2"), "--include-shipped", "--out", str(out),
-                    "scaffold_test_msgs", "std_msgs", "geometry_msgs"],
-                   env=env, check=True, capture_output=True)
+    code = "from unityscaffold.cli import main; import sys; sys.exit(main(sys.argv[1:]))"
+    subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            code,
+            "msgs",
+            "gen",
+            "--ros",
+            "2",
+            "--path",
+            str(DATA / "ros2"),
+            "--include-shipped",
+            "--out",
+            str(out),
+            "scaffold_test_msgs",
+            "std_msgs",
+            "geometry_msgs",
+        ],
+        env=env,
+        check=True,
+        capture_output=True,
+    )
     return {p.relative_to(out).as_posix(): p.read_bytes() for p in out.rglob("*") if p.is_file()}
 
 

@@ -26,15 +26,24 @@ def ros2() -> Generation:
 
 def test_service_halves_both_carry_the_service_name(ros1: Generation, ros2: Generation) -> None:
     for half in ("Request", "Response"):
-        assert ('RosMessageName = "scaffold_test_msgs/Lookup";'
-                in _text(ros1, f"ScaffoldTest/srv/Lookup{half}.cs"))
-        assert ('RosMessageName = "scaffold_test_msgs/srv/Lookup";'
-                in _text(ros2, f"ScaffoldTest/srv/Lookup{half}.cs"))
+        assert 'RosMessageName = "scaffold_test_msgs/Lookup";' in _text(
+            ros1, f"ScaffoldTest/srv/Lookup{half}.cs"
+        )
+        assert 'RosMessageName = "scaffold_test_msgs/srv/Lookup";' in _text(
+            ros2, f"ScaffoldTest/srv/Lookup{half}.cs"
+        )
 
 
 def test_actions_get_rossharps_seven_classes(ros1: Generation, ros2: Generation) -> None:
-    suffixes = ("Goal", "Result", "Feedback", "ActionGoal", "ActionResult", "ActionFeedback",
-                "Action")
+    suffixes = (
+        "Goal",
+        "Result",
+        "Feedback",
+        "ActionGoal",
+        "ActionResult",
+        "ActionFeedback",
+        "Action",
+    )
     for generation, prefix in ((ros1, "scaffold_test_msgs/"), (ros2, "scaffold_test_msgs/action/")):
         for suffix in suffixes:
             text = _text(generation, f"ScaffoldTest/action/Cook{suffix}.cs")
@@ -42,11 +51,14 @@ def test_actions_get_rossharps_seven_classes(ros1: Generation, ros2: Generation)
 
 
 def test_ros1_and_ros2_action_wrappers_use_their_bases(ros1: Generation, ros2: Generation) -> None:
-    assert ("CookActionGoal(Header header, GoalID goal_id, CookGoal goal) : base(header, goal_id)"
-            in _text(ros1, "ScaffoldTest/action/CookActionGoal.cs"))
-    assert ("(Header header, string action, string id, CookFeedback values)"
-            " : base(header, action, id)"
-            in _text(ros2, "ScaffoldTest/action/CookActionFeedback.cs"))
+    assert (
+        "CookActionGoal(Header header, GoalID goal_id, CookGoal goal) : base(header, goal_id)"
+        in _text(ros1, "ScaffoldTest/action/CookActionGoal.cs")
+    )
+    assert (
+        "(Header header, string action, string id, CookFeedback values)"
+        " : base(header, action, id)" in _text(ros2, "ScaffoldTest/action/CookActionFeedback.cs")
+    )
 
 
 def test_files_are_guarded_by_the_ros_version(ros1: Generation, ros2: Generation) -> None:
@@ -66,7 +78,8 @@ def test_class_map_names_every_role(ros1: Generation, ros2: Generation) -> None:
     roles = ros1.classes["scaffold_test_msgs/action/Cook"]
     assert roles["action_goal"].name == "CookActionGoal"
     assert ros2.classes["scaffold_test_msgs/srv/Lookup"]["response"].full_name == (
-        "RosSharp.RosBridgeClient.MessageTypes.ScaffoldTest.LookupResponse")
+        "RosSharp.RosBridgeClient.MessageTypes.ScaffoldTest.LookupResponse"
+    )
     assert ros2.message_class("scaffold_test_msgs/msg/Kitchen").name == "Kitchen"
 
 
@@ -80,8 +93,9 @@ def test_ros2_byte_is_unsigned_and_ros1_byte_signed() -> None:
 
 
 def test_ros2_defaults_are_properties_initialised_in_the_constructor() -> None:
-    text = _text(generate_data(Dialect.ROS2, ["scaffold_test_msgs/Kitchen"]),
-                 "ScaffoldTest/msg/Kitchen.cs")
+    text = _text(
+        generate_data(Dialect.ROS2, ["scaffold_test_msgs/Kitchen"]), "ScaffoldTest/msg/Kitchen.cs"
+    )
     assert "public float scale { get; set; }" in text
     assert "this.scale = 1.5f;" in text
     assert "this.offsets = new long[] { -1L, 0L, 9223372036854775807L };" in text
@@ -90,13 +104,19 @@ def test_ros2_defaults_are_properties_initialised_in_the_constructor() -> None:
 
 
 def test_include_shipped_generates_shipped_types_but_never_ros1_time() -> None:
-    generation = generate_data(Dialect.ROS1, ["std_msgs/Time", "std_msgs/Header"],
-                               include_shipped=True)
+    generation = generate_data(
+        Dialect.ROS1, ["std_msgs/Time", "std_msgs/Header"], include_shipped=True
+    )
     assert [f.path for f in generation.files] == ["Std/msg/Header.cs"]
     assert "hand-writes" in generation.skipped[0].reason
 
 
 def test_doc_comments_escape_xml_and_drop_blank_ends() -> None:
     assert doc_lines(("", "a < b & c > d", "", "x", "")) == (
-        "/// <summary>", "/// a &lt; b &amp; c &gt; d", "///", "/// x", "/// </summary>")
+        "/// <summary>",
+        "/// a &lt; b &amp; c &gt; d",
+        "///",
+        "/// x",
+        "/// </summary>",
+    )
     assert doc_lines(()) == ()

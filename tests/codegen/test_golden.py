@@ -18,14 +18,24 @@ from unityscaffold.cli import main
 CASES = {
     "ros1": ["--ros", "1", "--path", str(DATA / "ros1"), "scaffold_test_msgs"],
     "ros2": ["--ros", "2", "--path", str(DATA / "ros2"), "scaffold_test_msgs"],
-    "ros1_namespace": ["--ros", "1", "--path", str(DATA / "ros1"), "--namespace", "MyRobot.Msgs",
-                       "scaffold_test_msgs/Cook"],
+    "ros1_namespace": [
+        "--ros",
+        "1",
+        "--path",
+        str(DATA / "ros1"),
+        "--namespace",
+        "MyRobot.Msgs",
+        "scaffold_test_msgs/Cook",
+    ],
 }
 
 
 def _tree(root: Path) -> dict[str, bytes]:
-    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*"))
-            if p.is_file()}
+    return {
+        p.relative_to(root).as_posix(): p.read_bytes()
+        for p in sorted(root.rglob("*"))
+        if p.is_file()
+    }
 
 
 def _generate(case: str, tmp_path: Path) -> Path:
@@ -51,16 +61,19 @@ def test_generated_tree_matches_golden(case: str, tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("case", ["ros1", "ros2"])
-def test_golden_csharp_compiles(case: str, mcs: str, tmp_path: Path, request: pytest.FixtureRequest
-                                ) -> None:
+def test_golden_csharp_compiles(
+    case: str, mcs: str, tmp_path: Path, request: pytest.FixtureRequest
+) -> None:
     runtime: Compiled = request.getfixturevalue(f"runtime_{case}")
     sources = sorted((GOLDEN / case).rglob("*.cs"))
     assert sources
-    compile_cs(mcs, sources, tmp_path / "Golden.dll", ros2=case == "ros2",
-               references=(runtime.assembly,)).assert_clean()
+    compile_cs(
+        mcs, sources, tmp_path / "Golden.dll", ros2=case == "ros2", references=(runtime.assembly,)
+    ).assert_clean()
 
 
 def test_golden_namespace_case_compiles(mcs: str, tmp_path: Path, runtime_ros1: Compiled) -> None:
     sources = sorted((GOLDEN / "ros1_namespace").rglob("*.cs"))
-    compile_cs(mcs, sources, tmp_path / "GoldenNs.dll", ros2=False,
-               references=(runtime_ros1.assembly,)).assert_clean()
+    compile_cs(
+        mcs, sources, tmp_path / "GoldenNs.dll", ros2=False, references=(runtime_ros1.assembly,)
+    ).assert_clean()

@@ -16,7 +16,8 @@ def _unity_project(root: Path) -> Path:
     (root / "Assets").mkdir(parents=True)
     (root / "ProjectSettings").mkdir()
     (root / "ProjectSettings" / "ProjectSettings.asset").write_text(
-        "PlayerSettings:\n  productGUID: 0123456789abcdef0123456789abcdef\n")
+        "PlayerSettings:\n  productGUID: 0123456789abcdef0123456789abcdef\n"
+    )
     return root
 
 
@@ -30,10 +31,16 @@ def test_metas_use_the_project_salt_and_asset_paths(tmp_path: Path) -> None:
     assert meta.create_only
     guid = guid_for(project_salt(root), "Assets/RosMessages/ScaffoldTest/msg/Range.cs")
     assert f"guid: {guid}\n".encode() in meta.content
-    folder_metas = sorted(p.relative_to(root).as_posix() for p in desired if
-                          p.name.endswith(".meta") and not p.name.endswith(".cs.meta"))
-    assert folder_metas == ["Assets/RosMessages.meta", "Assets/RosMessages/ScaffoldTest.meta",
-                            "Assets/RosMessages/ScaffoldTest/msg.meta"]
+    folder_metas = sorted(
+        p.relative_to(root).as_posix()
+        for p in desired
+        if p.name.endswith(".meta") and not p.name.endswith(".cs.meta")
+    )
+    assert folder_metas == [
+        "Assets/RosMessages.meta",
+        "Assets/RosMessages/ScaffoldTest.meta",
+        "Assets/RosMessages/ScaffoldTest/msg.meta",
+    ]
 
 
 def test_outside_a_unity_project_nothing_goes_outside_out(tmp_path: Path) -> None:

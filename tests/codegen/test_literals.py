@@ -9,14 +9,26 @@ import pytest
 from unityscaffold.codegen.literals import array_literal, literal, string_literal
 
 
-@pytest.mark.parametrize(("value", "cs_type", "text"), [
-    (0.5, "float", "0.5f"), (1, "float", "1.0f"), (0.1, "double", "0.1"), (2, "double", "2.0"),
-    (1e-20, "double", "1e-20"), (math.nan, "float", "float.NaN"),
-    (math.inf, "double", "double.PositiveInfinity"), (-math.inf, "float", "float.NegativeInfinity"),
-    (-9223372036854775808, "long", "-9223372036854775808L"),
-    (18446744073709551615, "ulong", "18446744073709551615UL"), (4294967295, "uint", "4294967295U"),
-    (-128, "sbyte", "-128"), (255, "byte", "255"), (True, "bool", "true"), (False, "bool", "false"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    ("value", "cs_type", "text"),
+    [
+        (0.5, "float", "0.5f"),
+        (1, "float", "1.0f"),
+        (0.1, "double", "0.1"),
+        (2, "double", "2.0"),
+        (1e-20, "double", "1e-20"),
+        (math.nan, "float", "float.NaN"),
+        (math.inf, "double", "double.PositiveInfinity"),
+        (-math.inf, "float", "float.NegativeInfinity"),
+        (-9223372036854775808, "long", "-9223372036854775808L"),
+        (18446744073709551615, "ulong", "18446744073709551615UL"),
+        (4294967295, "uint", "4294967295U"),
+        (-128, "sbyte", "-128"),
+        (255, "byte", "255"),
+        (True, "bool", "true"),
+        (False, "bool", "false"),
+    ],
+)
 def test_literals_carry_their_csharp_type(value: object, cs_type: str, text: str) -> None:
     assert literal(value, cs_type) == text  # type: ignore[arg-type]
 

@@ -13,12 +13,21 @@ from unityscaffold.codegen.naming import (
 from unityscaffold.errors import UserError
 
 
-@pytest.mark.parametrize(("package", "segment"), [
-    ("geometry_msgs", "Geometry"), ("std_srvs", "Std"), ("tf2_msgs", "Tf2"),
-    ("unique_identifier_msgs", "UniqueIdentifier"), ("foo_msgs_ext", "FooMsgs"),
-    ("builtin_interfaces", "BuiltinInterfaces"), ("rosapi", "Rosapi"),
-    ("my_robot_actions", "MyRobot"), ("test_msgs", "Test"), ("action_msgs", "Action"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    ("package", "segment"),
+    [
+        ("geometry_msgs", "Geometry"),
+        ("std_srvs", "Std"),
+        ("tf2_msgs", "Tf2"),
+        ("unique_identifier_msgs", "UniqueIdentifier"),
+        ("foo_msgs_ext", "FooMsgs"),
+        ("builtin_interfaces", "BuiltinInterfaces"),
+        ("rosapi", "Rosapi"),
+        ("my_robot_actions", "MyRobot"),
+        ("test_msgs", "Test"),
+        ("action_msgs", "Action"),
+    ],
+)
 def test_package_names_become_rossharp_namespaces(package: str, segment: str) -> None:
     assert namespace_segment(package) == segment
 
@@ -33,10 +42,18 @@ def test_class_names_capitalise_only_the_first_letter() -> None:
     assert class_name("TF2Error") == "TF2Error"
 
 
-@pytest.mark.parametrize(("name", "escaped"), [
-    ("object", "@object"), ("params", "@params"), ("default", "@default"), ("value", "@value"),
-    ("range", "range"), ("x", "x"), ("frame_id", "frame_id"),
-])  # fmt: skip
+@pytest.mark.parametrize(
+    ("name", "escaped"),
+    [
+        ("object", "@object"),
+        ("params", "@params"),
+        ("default", "@default"),
+        ("value", "@value"),
+        ("range", "range"),
+        ("x", "x"),
+        ("frame_id", "frame_id"),
+    ],
+)
 def test_keywords_are_escaped_with_at(name: str, escaped: str) -> None:
     assert escape_identifier(name) == escaped
 

@@ -16,7 +16,10 @@ from genmsg import gentools
 
 def main(root):
     packages = sorted(
-        {os.path.basename(os.path.dirname(d)) for d in glob.glob(root + "/*/msg") + glob.glob(root + "/*/srv")}
+        {
+            os.path.basename(os.path.dirname(d))
+            for d in glob.glob(root + "/*/msg") + glob.glob(root + "/*/srv")
+        }
     )
     search = {p: [os.path.join(root, p, "msg")] for p in packages}
     context = loader.MsgContext.create_default()
@@ -26,16 +29,21 @@ def main(root):
             name = "%s/%s" % (package, os.path.basename(path)[:-4])
             spec = loader.load_msg_by_type(context, name, search)
             loader.load_depends(context, spec, search)
-            result[name] = {"md5sum": gentools.compute_md5(context, spec),
-                            "definition": gentools.compute_full_text(context, spec)}
+            result[name] = {
+                "md5sum": gentools.compute_md5(context, spec),
+                "definition": gentools.compute_full_text(context, spec),
+            }
         for path in sorted(glob.glob(os.path.join(root, package, "srv", "*.srv"))):
             name = "%s/%s" % (package, os.path.basename(path)[:-4])
             spec = loader.load_srv_from_file(context, path, name)
             loader.load_depends(context, spec, search)
             halves = {}
             for key, half in (("request", spec.request), ("response", spec.response)):
-                halves[key] = {"type": half.full_name, "md5sum": gentools.compute_md5(context, half),
-                               "definition": gentools.compute_full_text(context, half)}
+                halves[key] = {
+                    "type": half.full_name,
+                    "md5sum": gentools.compute_md5(context, half),
+                    "definition": gentools.compute_full_text(context, half),
+                }
             result[name] = dict(md5sum=gentools.compute_md5(context, spec), **halves)
     json.dump(result, sys.stdout, indent=0, sort_keys=True)
 

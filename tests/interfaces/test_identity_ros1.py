@@ -19,14 +19,19 @@ REFERENCE_SCRIPT = Path(__file__).with_name("genmsg_reference.py")
 def genmsg_results(genmsg_python, ros1_share) -> dict:
     output = subprocess.run(
         [str(genmsg_python), str(REFERENCE_SCRIPT), str(ros1_share)],
-        capture_output=True, text=True, check=True, timeout=120,
+        capture_output=True,
+        text=True,
+        check=True,
+        timeout=120,
     ).stdout
     return json.loads(output)
 
 
 @pytest.fixture(scope="module")
 def identity(ros1_share) -> Ros1Identity:
-    packages = sorted({p.parent for p in ros1_share.glob("*/msg")} | {p.parent for p in ros1_share.glob("*/srv")})
+    packages = sorted(
+        {p.parent for p in ros1_share.glob("*/msg")} | {p.parent for p in ros1_share.glob("*/srv")}
+    )
     registry = Registry.load(Dialect.ROS1, packages, use_environment=False, use_builtin=False)
     return Ros1Identity(registry)
 
@@ -70,7 +75,10 @@ def test_every_service_md5sum_and_halves_equal_genmsg(genmsg_results, identity):
             half = getattr(spec, key)
             want = expected[key]
             if (half.full_name, identity.md5sum(half), identity.full_text(half)) != (
-                want["type"], want["md5sum"], want["definition"]):
+                want["type"],
+                want["md5sum"],
+                want["definition"],
+            ):
                 mismatches.append(f"{name} {key}")
     assert services >= 29
     assert mismatches == []
@@ -92,9 +100,17 @@ def test_known_md5sums_from_the_builtin_definitions(name, md5):
 
 def test_action_messages_equal_the_files_debian_generated(ros1_share):
     """genaction's seven texts, rebuilt from the .action file, are byte-identical to Debian's .msg files."""
-    registry = Registry.load(Dialect.ROS1, [ros1_share / "nav_msgs", ros1_share / "actionlib_msgs",
-                                            ros1_share / "std_msgs", ros1_share / "geometry_msgs"],
-                             use_environment=False, use_builtin=False)
+    registry = Registry.load(
+        Dialect.ROS1,
+        [
+            ros1_share / "nav_msgs",
+            ros1_share / "actionlib_msgs",
+            ros1_share / "std_msgs",
+            ros1_share / "geometry_msgs",
+        ],
+        use_environment=False,
+        use_builtin=False,
+    )
     action = registry.get("nav_msgs/action/GetMap")
     assert action.kind.value == "action"
     for message in action.messages:

@@ -10,21 +10,58 @@ from hypothesis import strategies as st
 from unityscaffold.errors import LocatedError
 from unityscaffold.interfaces import ros1, ros2
 
-ROS1_TYPES = ["bool", "int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64",
-              "float32", "float64", "string", "time", "duration", "byte", "char"]
-ROS2_TYPES = ["bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16",
-              "int32", "uint32", "int64", "uint64", "string", "wstring"]
+ROS1_TYPES = [
+    "bool",
+    "int8",
+    "uint8",
+    "int16",
+    "uint16",
+    "int32",
+    "uint32",
+    "int64",
+    "uint64",
+    "float32",
+    "float64",
+    "string",
+    "time",
+    "duration",
+    "byte",
+    "char",
+]
+ROS2_TYPES = [
+    "bool",
+    "byte",
+    "char",
+    "float32",
+    "float64",
+    "int8",
+    "uint8",
+    "int16",
+    "uint16",
+    "int32",
+    "uint32",
+    "int64",
+    "uint64",
+    "string",
+    "wstring",
+]
 
-ros1_names = st.from_regex(r"\A[A-Za-z][A-Za-z0-9_]{0,12}\Z").filter(lambda n: not keyword.iskeyword(n))
+ros1_names = st.from_regex(r"\A[A-Za-z][A-Za-z0-9_]{0,12}\Z").filter(
+    lambda n: not keyword.iskeyword(n)
+)
 ros2_names = st.from_regex(r"\A[a-z](?:[a-z0-9]|_(?=[a-z0-9])){0,12}\Z")
 arrays = st.one_of(st.just(""), st.just("[]"), st.integers(1, 64).map(lambda n: f"[{n}]"))
-comments = st.one_of(st.just(""), st.from_regex(r"\A[A-Za-z0-9 .,<>&]{0,20}\Z").map(lambda t: "  # " + t))
+comments = st.one_of(
+    st.just(""), st.from_regex(r"\A[A-Za-z0-9 .,<>&]{0,20}\Z").map(lambda t: "  # " + t)
+)
 
 
 @st.composite
 def ros1_message(draw):
     names = draw(st.lists(ros1_names, min_size=1, max_size=8, unique=True))
-    rows = [(draw(st.sampled_from(ROS1_TYPES)) + draw(arrays), name, draw(comments)) for name in names]
+    rows = [
+        (draw(st.sampled_from(ROS1_TYPES)) + draw(arrays), name, draw(comments)) for name in names
+    ]
     return rows, "".join(f"{t} {n}{c}\n" for t, n, c in rows)
 
 
@@ -63,13 +100,17 @@ def test_ros2_fields_parse_back_to_what_was_written(message):
 def ros1_constant(draw):
     kind = draw(st.sampled_from(["int8", "uint16", "int64", "float64", "bool", "string"]))
     if kind == "string":
-        value = draw(st.text(st.characters(min_codepoint=33, max_codepoint=126), min_size=1, max_size=10))
+        value = draw(
+            st.text(st.characters(min_codepoint=33, max_codepoint=126), min_size=1, max_size=10)
+        )
     elif kind == "bool":
         value = draw(st.sampled_from(["True", "False", "1", "0"]))
     elif kind == "float64":
         value = repr(draw(st.floats(allow_nan=False, allow_infinity=False)))
     else:
-        low, high = {"int8": (-128, 127), "uint16": (0, 65535), "int64": (-(2**63), 2**63 - 1)}[kind]
+        low, high = {"int8": (-128, 127), "uint16": (0, 65535), "int64": (-(2**63), 2**63 - 1)}[
+            kind
+        ]
         value = str(draw(st.integers(low, high)))
     return kind, value
 

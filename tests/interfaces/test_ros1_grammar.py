@@ -16,13 +16,18 @@ def parse(text: str):
 def test_string_constant_keeps_raw_text_after_the_first_equals_sign():
     spec = parse('string A = a # b=c\nstring B="x"\n')
     assert [(c.name, c.value, c.text) for c in spec.constants] == [
-        ("A", "a # b=c", "a # b=c"), ("B", '"x"', '"x"')]
+        ("A", "a # b=c", "a # b=c"),
+        ("B", '"x"', '"x"'),
+    ]
 
 
 def test_numeric_constant_text_is_kept_as_written_for_the_md5():
     spec = parse("uint8 MODIFY = 0\nfloat64 PI=3.14159\nint8 NO_FIX =  -1  # comment\n")
     assert [(c.name, c.value, c.text) for c in spec.constants] == [
-        ("MODIFY", 0, "0"), ("PI", 3.14159, "3.14159"), ("NO_FIX", -1, "-1")]
+        ("MODIFY", 0, "0"),
+        ("PI", 3.14159, "3.14159"),
+        ("NO_FIX", -1, "-1"),
+    ]
 
 
 def test_bool_constants_are_python_literals():
@@ -33,13 +38,21 @@ def test_bool_constants_are_python_literals():
 def test_bare_header_means_std_msgs_header_and_other_names_get_the_package():
     spec = parse("Header header\nPoint p\ngeometry_msgs/Pose pose\ntime t\nbyte b\nchar c\n")
     assert [f.type.base for f in spec.fields] == [
-        "std_msgs/Header", "pkg/Point", "geometry_msgs/Pose", "time", "byte", "char"]
+        "std_msgs/Header",
+        "pkg/Point",
+        "geometry_msgs/Pose",
+        "time",
+        "byte",
+        "char",
+    ]
 
 
 def test_arrays_fixed_and_unbounded():
     spec = parse("float64[9] k\nuint8[] data\n")
     assert [(f.type.array, f.type.size) for f in spec.fields] == [
-        (ArrayKind.FIXED, 9), (ArrayKind.UNBOUNDED, None)]
+        (ArrayKind.FIXED, 9),
+        (ArrayKind.UNBOUNDED, None),
+    ]
     assert [f.type_text for f in spec.fields] == ["float64[9]", "uint8[]"]
 
 
@@ -86,7 +99,10 @@ def test_every_bad_line_is_reported_not_just_the_first():
 
 def test_service_halves_split_at_any_line_starting_with_three_dashes():
     spec = ros1.parse_service("int64 a\n----\nint64 sum\n", "pkg", "Add", "Add.srv")
-    assert (spec.request.full_name, spec.response.full_name) == ("pkg/AddRequest", "pkg/AddResponse")
+    assert (spec.request.full_name, spec.response.full_name) == (
+        "pkg/AddRequest",
+        "pkg/AddResponse",
+    )
     assert spec.request.text == "int64 a\n"
     assert spec.response.text == "int64 sum\n\n"
     assert spec.response.fields[0].location.line == 3
@@ -101,8 +117,20 @@ def test_action_needs_three_parts():
 def test_action_gives_genactions_seven_messages():
     spec = ros1.parse_action("int32 order\n---\nint32[] seq\n---\nint32[] part\n", "pkg", "Fib")
     names = sorted(m.name for m in spec.messages)
-    assert names == sorted(["FibGoal", "FibResult", "FibFeedback", "FibAction", "FibActionGoal",
-                            "FibActionResult", "FibActionFeedback"])
+    assert names == sorted(
+        [
+            "FibGoal",
+            "FibResult",
+            "FibFeedback",
+            "FibAction",
+            "FibActionGoal",
+            "FibActionResult",
+            "FibActionFeedback",
+        ]
+    )
     assert spec.goal.text == ros1.ACTION_BANNER + "int32 order\n"
     assert [f.type.base for f in spec.derived[1].fields] == [
-        "std_msgs/Header", "actionlib_msgs/GoalID", "pkg/FibGoal"]
+        "std_msgs/Header",
+        "actionlib_msgs/GoalID",
+        "pkg/FibGoal",
+    ]

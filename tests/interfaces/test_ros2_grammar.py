@@ -23,10 +23,12 @@ def test_bounded_strings_and_sequences():
 
 
 def test_defaults_scalars_arrays_and_quoted_strings():
-    spec = parse('int32 x 5\nfloat64[2] v [1.5, -2]\nstring s "a # b"\n'
-                 "string[] names ['x, y', \"z\"]\nbool flag TRUE\nint32 hex 0x10\n")
+    spec = parse(
+        'int32 x 5\nfloat64[2] v [1.5, -2]\nstring s "a # b"\n'
+        "string[] names ['x, y', \"z\"]\nbool flag TRUE\nint32 hex 0x10\n"
+    )
     # The comment starts at the first "#", even inside quotes, exactly as in rosidl_adapter.
-    assert [f.default for f in spec.fields] == [5, (1.5, -2.0), "\"a", ("x, y", "z"), True, 16]
+    assert [f.default for f in spec.fields] == [5, (1.5, -2.0), '"a', ("x, y", "z"), True, 16]
 
 
 def test_string_constants_lose_one_pair_of_quotes():
@@ -72,13 +74,21 @@ def test_service_needs_exactly_one_separator_line():
 
 def test_service_derives_request_response_and_event():
     spec = ros2.parse_service("int32 a\n---\nint32 b\n", "pkg", "S", "S.srv")
-    assert [m.full_name for m in spec.parts] == ["pkg/srv/S_Request", "pkg/srv/S_Response",
-                                                 "pkg/srv/S_Event"]
+    assert [m.full_name for m in spec.parts] == [
+        "pkg/srv/S_Request",
+        "pkg/srv/S_Response",
+        "pkg/srv/S_Event",
+    ]
 
 
 def test_action_derives_send_goal_get_result_and_feedback_message():
     spec = ros2.parse_action("int32 order\n---\nint32[] seq\n---\nint32[] part\n", "pkg", "Fib")
-    assert [s.full_name for s in spec.services] == ["pkg/action/Fib_SendGoal", "pkg/action/Fib_GetResult"]
+    assert [s.full_name for s in spec.services] == [
+        "pkg/action/Fib_SendGoal",
+        "pkg/action/Fib_GetResult",
+    ]
     assert spec.derived[0].full_name == "pkg/action/Fib_FeedbackMessage"
     assert [f.type.base for f in spec.services[0].request.fields] == [
-        "unique_identifier_msgs/msg/UUID", "pkg/action/Fib_Goal"]
+        "unique_identifier_msgs/msg/UUID",
+        "pkg/action/Fib_Goal",
+    ]

@@ -13,8 +13,11 @@ from unityscaffold.interfaces.registry import Registry
 
 @pytest.fixture(scope="module")
 def registry(ros2_share) -> Registry:
-    packages = sorted(p.parent for p in ros2_share.glob("*/package.xml")
-                      if any((p.parent / k).is_dir() for k in ("msg", "srv", "action")))
+    packages = sorted(
+        p.parent
+        for p in ros2_share.glob("*/package.xml")
+        if any((p.parent / k).is_dir() for k in ("msg", "srv", "action"))
+    )
     return Registry.load(Dialect.ROS2, packages, use_environment=False, use_builtin=False)
 
 
@@ -32,9 +35,16 @@ def parser():
 
 def _their_fields(spec):
     return [
-        (str(f.type.pkg_name or ""), f.type.type, f.type.is_array, f.type.array_size,
-         f.type.is_upper_bound, f.type.string_upper_bound, f.name,
-         tuple(f.default_value) if isinstance(f.default_value, list) else f.default_value)
+        (
+            str(f.type.pkg_name or ""),
+            f.type.type,
+            f.type.is_array,
+            f.type.array_size,
+            f.type.is_upper_bound,
+            f.type.string_upper_bound,
+            f.name,
+            tuple(f.default_value) if isinstance(f.default_value, list) else f.default_value,
+        )
         for f in spec.fields
     ]
 
@@ -44,8 +54,18 @@ def _our_fields(spec: MessageSpec):
     for f in spec.fields:
         ref = f.type
         package, base = ("", ref.base) if ref.is_builtin else (ref.package, ref.short_name)
-        rows.append((package, base, ref.is_array, ref.size, ref.array.value == "bounded",
-                     ref.string_bound, f.name, f.default))
+        rows.append(
+            (
+                package,
+                base,
+                ref.is_array,
+                ref.size,
+                ref.array.value == "bounded",
+                ref.string_bound,
+                f.name,
+                f.default,
+            )
+        )
     return rows
 
 

@@ -24,9 +24,16 @@ DATA = Path(__file__).parent / "data"
 TEST_PACKAGE = DATA / "scaffold_test_msgs"
 TEST_TIME_LIMIT = 60  # seconds; every network step in these tests has its own, shorter timeout
 # Types the rospy node and the fake rosbridge use; ".srv" marks services.
-TYPES = ["std_msgs/String", "sensor_msgs/Imu", "scaffold_test_msgs/Reading", "rosgraph_msgs/Log",
-         "geometry_msgs/Twist", "std_msgs/Int32", "std_srvs/Trigger.srv",
-         "scaffold_test_msgs/Calibrate.srv"]
+TYPES = [
+    "std_msgs/String",
+    "sensor_msgs/Imu",
+    "scaffold_test_msgs/Reading",
+    "rosgraph_msgs/Log",
+    "geometry_msgs/Twist",
+    "std_msgs/Int32",
+    "std_srvs/Trigger.srv",
+    "scaffold_test_msgs/Calibrate.srv",
+]
 
 
 @pytest.fixture(autouse=True)
@@ -52,7 +59,11 @@ def genmsg_truth(genmsg_python: Path, ros1_share: Path) -> dict[str, Any]:
     """genmsg's md5sum and full text of TYPES (services: of both halves too)."""
     output = subprocess.run(
         [str(genmsg_python), str(DATA / "genmsg_dump.py"), "--root", str(DATA), *TYPES],
-        capture_output=True, text=True, timeout=60, check=True)
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=True,
+    )
     return dict(json.loads(output.stdout))
 
 
@@ -66,8 +77,9 @@ class Ros1System:
 
 def _start(argv: list[str], env: dict[str, str], log: Path) -> subprocess.Popen[bytes]:
     with log.open("wb") as out:
-        return subprocess.Popen(argv, env=env, stdout=out, stderr=subprocess.STDOUT,
-                                start_new_session=True)
+        return subprocess.Popen(
+            argv, env=env, stdout=out, stderr=subprocess.STDOUT, start_new_session=True
+        )
 
 
 def _stop(process: subprocess.Popen[bytes]) -> None:
@@ -96,32 +108,58 @@ def _wait_for(what: str, check: Any, timeout: float, logs: list[Path]) -> None:
 
 
 @pytest.fixture(scope="session")
-def ros1_system(genmsg_truth: dict[str, Any], tmp_path_factory: pytest.TempPathFactory
-                ) -> Iterator[Ros1System]:
+def ros1_system(
+    genmsg_truth: dict[str, Any], tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[Ros1System]:
     """rosmaster on a free loopback port, the rospy test node, and a registered publisher
     (/ghost) whose node accepts connections but never answers."""
     require(Path("/usr/bin/rosmaster").exists(), "Debian's python3-rosmaster")
-    require(subprocess.run([str(SYSTEM_PYTHON), "-c", "import rospy, genpy.dynamic"],
-                           capture_output=True, timeout=30).returncode == 0,
-            "Debian's python3-rospy and python3-genpy")
+    require(
+        subprocess.run(
+            [str(SYSTEM_PYTHON), "-c", "import rospy, genpy.dynamic"],
+            capture_output=True,
+            timeout=30,
+        ).returncode
+        == 0,
+        "Debian's python3-rospy and python3-genpy",
+    )
     home = tmp_path_factory.mktemp("ros_home")
     port = free_port()
     url = f"http://127.0.0.1:{port}"
-    env = {**os.environ, "ROS_MASTER_URI": url, "ROS_HOSTNAME": "127.0.0.1",
-           "ROS_LOG_DIR": str(home / "log"), "ROS_HOME": str(home)}
+    env = {
+        **os.environ,
+        "ROS_MASTER_URI": url,
+        "ROS_HOSTNAME": "127.0.0.1",
+        "ROS_LOG_DIR": str(home / "log"),
+        "ROS_HOME": str(home),
+    }
     definitions = home / "definitions.json"
     definitions.write_text(json.dumps(genmsg_truth))
     processes: list[subprocess.Popen[bytes]] = []
     silent = socket.socket()  # listens, never accepts: a node that hangs
     try:
-        processes.append(_start([str(SYSTEM_PYTHON), "/usr/bin/rosmaster", "--core", "-p",
-                                 str(port)], env, home / "master.log"))
+        processes.append(
+            _start(
+                [str(SYSTEM_PYTHON), "/usr/bin/rosmaster", "--core", "-p", str(port)],
+                env,
+                home / "master.log",
+            )
+        )
         master = xmlrpc.client.ServerProxy(url)
         _wait_for("rosmaster", lambda: master.getPid("/test")[0] == 1, 20, [home / "master.log"])
-        processes.append(_start([str(SYSTEM_PYTHON), str(DATA / "ros1_node.py"),
-                                 str(definitions)], env, home / "node.log"))
-        _wait_for("the rospy node", lambda: _node_ready(master), 30,
-                  [home / "node.log", home / "master.log"])
+        processes.append(
+            _start(
+                [str(SYSTEM_PYTHON), str(DATA / "ros1_node.py"), str(definitions)],
+                env,
+                home / "node.log",
+            )
+        )
+        _wait_for(
+            "the rospy node",
+            lambda: _node_ready(master),
+            30,
+            [home / "node.log", home / "master.log"],
+        )
         silent.bind(("127.0.0.1", 0))
         silent.listen(8)
         ghost_api = f"http://127.0.0.1:{silent.getsockname()[1]}/"
@@ -137,5 +175,7 @@ def ros1_system(genmsg_truth: dict[str, Any], tmp_path_factory: pytest.TempPathF
 def _node_ready(master: xmlrpc.client.ServerProxy) -> bool:
     publishers, subscribers, services = master.getSystemState("/test")[2]
     topics = {name for name, _ in publishers} | {name for name, _ in subscribers}
-    return {"/reading", "/imu", "/chatter", "/cmd_vel"} <= topics and \
-        {"/trigger", "/calibrate"} <= {name for name, _ in services}
+    return {"/reading", "/imu", "/chatter", "/cmd_vel"} <= topics and {
+        "/trigger",
+        "/calibrate",
+    } <= {name for name, _ in services}

@@ -26,8 +26,12 @@ TOPICS = {  # name: (type, publishers, subscribers)
     "/cmd_vel": ("geometry_msgs/Twist", [], ["/base"]),
     "/rosout": ("rosgraph_msgs/Log", ["/talker"], ["/rosout"]),
 }
-SERVICES = {"/trigger": "std_srvs/Trigger", "/calibrate": "scaffold_test_msgs/Calibrate",
-            "/rosapi/topics": "rosapi/Topics", "/talker/get_loggers": "roscpp/GetLoggers"}
+SERVICES = {
+    "/trigger": "std_srvs/Trigger",
+    "/calibrate": "scaffold_test_msgs/Calibrate",
+    "/rosapi/topics": "rosapi/Topics",
+    "/talker/get_loggers": "roscpp/GetLoggers",
+}
 
 
 class FakeRosbridge:
@@ -48,9 +52,13 @@ class FakeRosbridge:
         empty = self.faults.get(service) == "empty_text"
         if service == "/rosapi/topics_and_raw_types":
             names = sorted(TOPICS)
-            return {"topics": names, "types": [TOPICS[n][0] for n in names],
-                    "typedefs_full_text": ["" if empty else self.truth[TOPICS[n][0]]["definition"]
-                                           for n in names]}
+            return {
+                "topics": names,
+                "types": [TOPICS[n][0] for n in names],
+                "typedefs_full_text": [
+                    "" if empty else self.truth[TOPICS[n][0]]["definition"] for n in names
+                ],
+            }
         if service == "/rosapi/topics":
             names = sorted(TOPICS)
             return {"topics": names, "types": [TOPICS[n][0] for n in names]}
@@ -87,8 +95,16 @@ class FakeRosbridge:
             connection.send("{'op': 'service_response'")
             return
         if fault == "status":
-            connection.send(json.dumps({"op": "status", "level": "error", "id": call_id,
-                                        "msg": f"Service {service} does not exist"}))
+            connection.send(
+                json.dumps(
+                    {
+                        "op": "status",
+                        "level": "error",
+                        "id": call_id,
+                        "msg": f"Service {service} does not exist",
+                    }
+                )
+            )
             return
         # Unrelated traffic first, as a busy bridge sends: the client must skip it.
         connection.send(json.dumps({"op": "publish", "topic": "/rosout", "msg": {"data": 1}}))
@@ -101,8 +117,17 @@ class FakeRosbridge:
             values, result = str(exc.args[0]), False
         if fault == "bad_shape":
             values = {key: 42 for key in values}
-        connection.send(json.dumps({"op": "service_response", "service": service,
-                                    "id": call_id, "values": values, "result": result}))
+        connection.send(
+            json.dumps(
+                {
+                    "op": "service_response",
+                    "service": service,
+                    "id": call_id,
+                    "values": values,
+                    "result": result,
+                }
+            )
+        )
 
 
 @contextmanager

@@ -38,8 +38,11 @@ def run_cli(capsys: pytest.CaptureFixture[str], *argv: str) -> Run:
 
 def snapshot(folder: Path) -> dict[str, str]:
     """Every file (hidden ones too) under ``folder`` with the sha256 of its content."""
-    return {str(p.relative_to(folder)): hashlib.sha256(p.read_bytes()).hexdigest()
-            for p in sorted(folder.rglob("*")) if p.is_file()}
+    return {
+        str(p.relative_to(folder)): hashlib.sha256(p.read_bytes()).hexdigest()
+        for p in sorted(folder.rglob("*"))
+        if p.is_file()
+    }
 
 
 def assert_clean_failure(run: Run, folder: Path, before: dict[str, str], message: str) -> None:

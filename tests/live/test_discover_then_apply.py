@@ -11,13 +11,22 @@ from helpers import run_cli
 
 
 def test_discover_then_apply_generates_compiling_code_without_the_workspace(
-        ros1_system, mcs: str, tmp_path: Path) -> None:
+    ros1_system, mcs: str, tmp_path: Path
+) -> None:
     project = tmp_path / "robot_unity"
     assert run_cli("init", str(project), "--ros", "1").code == 0
     manifest = project / "robot.yaml"
     # The custom service's .srv text is never sent by ROS 1, so it is left out here.
-    found = run_cli("discover", str(manifest), "--master", ros1_system.url, "--timeout", "2",
-                    "--exclude", "ghost|calibrate")
+    found = run_cli(
+        "discover",
+        str(manifest),
+        "--master",
+        ros1_system.url,
+        "--timeout",
+        "2",
+        "--exclude",
+        "ghost|calibrate",
+    )
     assert found.code == 0, found.err
     applied = run_cli("apply", str(manifest), "--json")
     assert applied.code == 0, applied.err

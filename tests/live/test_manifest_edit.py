@@ -29,19 +29,28 @@ services:
 """
 
 FOUND = Discovery(
-    Dialect.ROS1, "http://127.0.0.1:11311",
-    (DiscoveredTopic("/imu", "sensor_msgs/Imu", Direction.SUBSCRIBE),
-     DiscoveredTopic("/odom", "nav_msgs/Odometry", Direction.SUBSCRIBE),
-     DiscoveredTopic("/mystery", "std_msgs/String")),
-    (DiscoveredService("/reset", "std_srvs/Trigger"),
-     DiscoveredService("/calibrate", "scaffold_test_msgs/Calibrate")))
+    Dialect.ROS1,
+    "http://127.0.0.1:11311",
+    (
+        DiscoveredTopic("/imu", "sensor_msgs/Imu", Direction.SUBSCRIBE),
+        DiscoveredTopic("/odom", "nav_msgs/Odometry", Direction.SUBSCRIBE),
+        DiscoveredTopic("/mystery", "std_msgs/String"),
+    ),
+    (
+        DiscoveredService("/reset", "std_srvs/Trigger"),
+        DiscoveredService("/calibrate", "scaffold_test_msgs/Calibrate"),
+    ),
+)
 
 
 def added_lines(before: str, after: str) -> list[str]:
     diff = difflib.ndiff(before.splitlines(), after.splitlines())
     assert not [line for line in diff if line.startswith("- ")], "a line was changed or removed"
-    return [line[2:] for line in difflib.ndiff(before.splitlines(), after.splitlines())
-            if line.startswith("+ ")]
+    return [
+        line[2:]
+        for line in difflib.ndiff(before.splitlines(), after.splitlines())
+        if line.startswith("+ ")
+    ]
 
 
 def test_new_entries_are_appended_and_nothing_else_changes() -> None:
@@ -67,17 +76,26 @@ def test_a_second_edit_changes_nothing() -> None:
     assert twice.text == once.text
 
 
-@pytest.mark.parametrize(("style", "text"), [
-    ("offset 0", "version: 1\nros: 1\ntopics:\n- name: /a\n  type: std_msgs/String\n"
-                 "  direction: publish\n"),
-    ("indent 4", "version: 1\nros: 1\ntopics:\n    -   name: /a\n        type: std_msgs/String\n"
-                 "        direction: publish\n"),
-])
+@pytest.mark.parametrize(
+    ("style", "text"),
+    [
+        (
+            "offset 0",
+            "version: 1\nros: 1\ntopics:\n- name: /a\n  type: std_msgs/String\n"
+            "  direction: publish\n",
+        ),
+        (
+            "indent 4",
+            "version: 1\nros: 1\ntopics:\n    -   name: /a\n        type: std_msgs/String\n"
+            "        direction: publish\n",
+        ),
+    ],
+)
 def test_block_style_lists_keep_their_indentation(style: str, text: str) -> None:
     edit = edit_manifest(text, FOUND, cache_entry="defs")
-    listed = text[text.index("topics:"):]
+    listed = text[text.index("topics:") :]
     assert listed in edit.text, style
-    new_topics = edit.text[edit.text.index(listed) + len(listed):].split("services:")[0]
+    new_topics = edit.text[edit.text.index(listed) + len(listed) :].split("services:")[0]
     dash = listed.splitlines()[1].split("name")[0]
     assert new_topics.startswith(f"{dash}name: /imu\n"), new_topics
     assert f"{dash}name: /mystery  # TODO: direction" in new_topics
@@ -85,8 +103,10 @@ def test_block_style_lists_keep_their_indentation(style: str, text: str) -> None
 
 
 def test_empty_flow_lists_and_missing_keys_are_filled() -> None:
-    text = ("version: 1\nros: 1\nproject: .\n\n# Extra folders:\n# interfaces:\n#   - ../ws\n\n"
-            "connector: {url: ws://localhost:9090}\ntopics: []\n# - {name: /example}\n")
+    text = (
+        "version: 1\nros: 1\nproject: .\n\n# Extra folders:\n# interfaces:\n#   - ../ws\n\n"
+        "connector: {url: ws://localhost:9090}\ntopics: []\n# - {name: /example}\n"
+    )
     edit = edit_manifest(text, FOUND, cache_entry="ros_definitions")
     assert "interfaces:\n  - ros_definitions\nconnector:" in edit.text
     assert "topics:\n  - {name: /imu," in edit.text
@@ -107,6 +127,10 @@ def test_malformed_manifests_are_located_errors(text: str) -> None:
 
 def test_the_fragment_lists_everything_discovered() -> None:
     fragment = manifest_fragment(FOUND, cache_entry="ros_definitions")
-    assert fragment.splitlines()[:4] == ["# discovered from http://127.0.0.1:11311", "ros: 1",
-                                         "interfaces:", "  - ros_definitions"]
+    assert fragment.splitlines()[:4] == [
+        "# discovered from http://127.0.0.1:11311",
+        "ros: 1",
+        "interfaces:",
+        "  - ros_definitions",
+    ]
     assert fragment.count("gameobject: RosConnector") == 5

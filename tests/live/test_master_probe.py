@@ -25,8 +25,11 @@ def test_master_discovery_finds_every_topic_and_service(ros1_system: Ros1System)
     assert {"/chatter", "/imu", "/reading", "/cmd_vel", "/ghost"} <= topics.keys()
     assert "/rosout" not in topics  # plumbing is left out unless asked for
     truth = ros1_system.truth
-    for name, kind in (("/chatter", "std_msgs/String"), ("/imu", "sensor_msgs/Imu"),
-                       ("/reading", "scaffold_test_msgs/Reading")):
+    for name, kind in (
+        ("/chatter", "std_msgs/String"),
+        ("/imu", "sensor_msgs/Imu"),
+        ("/reading", "scaffold_test_msgs/Reading"),
+    ):
         assert topics[name].type == kind
         assert topics[name].md5 == truth[kind]["md5sum"]
         assert topics[name].definition == truth[kind]["definition"]
@@ -50,16 +53,22 @@ def test_a_node_that_never_answers_is_skipped_with_a_warning(ros1_system: Ros1Sy
 
 
 def test_select_and_exclude_filter_before_probing(ros1_system: Ros1System) -> None:
-    found = discover(master_url=ros1_system.url, timeout=FAST,
-                     names=NameFilter.of(select="^/(imu|reading|trigger)$", exclude="read"))
+    found = discover(
+        master_url=ros1_system.url,
+        timeout=FAST,
+        names=NameFilter.of(select="^/(imu|reading|trigger)$", exclude="read"),
+    )
     assert [t.name for t in found.topics] == ["/imu"]
     assert [s.name for s in found.services] == ["/trigger"]
     assert found.warnings == ()  # the silent /ghost node was never asked
 
 
 def test_all_includes_system_topics(ros1_system: Ros1System) -> None:
-    found = discover(master_url=ros1_system.url, timeout=FAST,
-                     names=NameFilter.of(select="rosout|get_loggers", include_system=True))
+    found = discover(
+        master_url=ros1_system.url,
+        timeout=FAST,
+        names=NameFilter.of(select="rosout|get_loggers", include_system=True),
+    )
     assert "/rosout" in {t.name for t in found.topics}
     assert any(s.name.endswith("/get_loggers") for s in found.services)
 
@@ -71,15 +80,16 @@ def test_live_types_lists_active_topics(ros1_system: Ros1System) -> None:
     assert listed["/rosout"] == "rosgraph_msgs/Log"
 
 
-def test_reconstructed_definitions_have_genmsg_md5sums(ros1_system: Ros1System,
-                                                        tmp_path: Path) -> None:
-    found = discover(master_url=ros1_system.url, timeout=FAST,
-                     names=NameFilter.of(exclude="ghost"))
+def test_reconstructed_definitions_have_genmsg_md5sums(
+    ros1_system: Ros1System, tmp_path: Path
+) -> None:
+    found = discover(master_url=ros1_system.url, timeout=FAST, names=NameFilter.of(exclude="ghost"))
     cache = tmp_path / "ros_definitions"
     staged = stage_definitions(found, cache)
     staged.commit()
-    assert (cache / "scaffold_test_msgs" / "msg" / "Sample.msg").read_text() == \
-        (Path(__file__).parent / "data/scaffold_test_msgs/msg/Sample.msg").read_text()
+    assert (cache / "scaffold_test_msgs" / "msg" / "Sample.msg").read_text() == (
+        Path(__file__).parent / "data/scaffold_test_msgs/msg/Sample.msg"
+    ).read_text()
     alone = Registry.load(Dialect.ROS1, [cache], use_environment=False, use_builtin=False)
     identity = Ros1Identity(alone)
     for kind in ("std_msgs/String", "sensor_msgs/Imu", "scaffold_test_msgs/Reading"):
@@ -90,11 +100,13 @@ def test_reconstructed_definitions_have_genmsg_md5sums(ros1_system: Ros1System,
     assert any("scaffold_test_msgs/Calibrate" in w for w in staged.warnings)
 
 
-def test_a_custom_service_is_checked_against_a_local_srv(ros1_system: Ros1System,
-                                                          tmp_path: Path) -> None:
+def test_a_custom_service_is_checked_against_a_local_srv(
+    ros1_system: Ros1System, tmp_path: Path
+) -> None:
     found = discover(master_url=ros1_system.url, timeout=FAST, names=NameFilter.of(exclude="ghost"))
-    staged = stage_definitions(found, tmp_path / "cache",
-                               search_paths=[Path(__file__).parent / "data"])
+    staged = stage_definitions(
+        found, tmp_path / "cache", search_paths=[Path(__file__).parent / "data"]
+    )
     staged.discard()
     assert staged.warnings == []
 

@@ -38,33 +38,42 @@ def test_rosbridge_discovery_reads_topics_directions_and_services(bridge: FakeRo
     assert topics["/cmd_vel"].direction is Direction.PUBLISH
     assert topics["/reading"].definition == bridge.truth["scaffold_test_msgs/Reading"]["definition"]
     assert [(s.name, s.type) for s in found.services] == [
-        ("/calibrate", "scaffold_test_msgs/Calibrate"), ("/trigger", "std_srvs/Trigger")]
+        ("/calibrate", "scaffold_test_msgs/Calibrate"),
+        ("/trigger", "std_srvs/Trigger"),
+    ]
     assert found.warnings == ()
 
 
-def test_rosbridge_definitions_reproduce_genmsg_md5sums(bridge: FakeRosbridge,
-                                                        tmp_path: Path) -> None:
+def test_rosbridge_definitions_reproduce_genmsg_md5sums(
+    bridge: FakeRosbridge, tmp_path: Path
+) -> None:
     found = discover(rosbridge_url=bridge.url, timeout=FAST)
     stage_definitions(found, tmp_path / "cache").commit()
-    alone = Registry.load(Dialect.ROS1, [tmp_path / "cache"], use_environment=False,
-                          use_builtin=False)
+    alone = Registry.load(
+        Dialect.ROS1, [tmp_path / "cache"], use_environment=False, use_builtin=False
+    )
     for kind in ("std_msgs/String", "sensor_msgs/Imu", "scaffold_test_msgs/Reading"):
         spec = alone.message(kind)
         assert Ros1Identity(alone).md5sum(spec) == bridge.truth[kind]["md5sum"]
         assert Ros1Identity(alone).full_text(spec) == bridge.truth[kind]["definition"]
 
 
-def test_empty_full_texts_fall_back_to_message_details(bridge: FakeRosbridge,
-                                                       tmp_path: Path) -> None:
+def test_empty_full_texts_fall_back_to_message_details(
+    bridge: FakeRosbridge, tmp_path: Path
+) -> None:
     bridge.faults["/rosapi/topics_and_raw_types"] = "empty_text"
-    found = discover(rosbridge_url=bridge.url, timeout=FAST, names=NameFilter.of(
-        select="^/(imu|chatter|reading)$"))
+    found = discover(
+        rosbridge_url=bridge.url,
+        timeout=FAST,
+        names=NameFilter.of(select="^/(imu|chatter|reading)$"),
+    )
     assert "/rosapi/message_details" in bridge.calls
     # Reading has constants, whose types rosapi does not give: refused, not guessed.
     assert any("cannot rebuild scaffold_test_msgs/Reading" in w for w in found.warnings)
     stage_definitions(found, tmp_path / "cache").commit()
-    alone = Registry.load(Dialect.ROS1, [tmp_path / "cache"], use_environment=False,
-                          use_builtin=False)
+    alone = Registry.load(
+        Dialect.ROS1, [tmp_path / "cache"], use_environment=False, use_builtin=False
+    )
     imu = alone.message("sensor_msgs/Imu")
     assert Ros1Identity(alone).md5sum(imu) == bridge.truth["sensor_msgs/Imu"]["md5sum"]
 
@@ -81,24 +90,46 @@ def test_unknown_directions_are_a_warning_not_an_error(bridge: FakeRosbridge) ->
     assert len(found.warnings) == 1
 
 
-@pytest.mark.parametrize(("service", "fault", "message"), [
-    ("/rosapi/topics_and_raw_types", "silent",
-     "rosbridge at {url} did not answer /rosapi/topics_and_raw_types within 0.5 s"),
-    ("/rosapi/topics_and_raw_types", "drop",
-     "rosbridge at {url} closed the connection while /rosapi/topics_and_raw_types was pending"),
-    ("/rosapi/topics_and_raw_types", "fail",
-     "rosbridge at {url}: /rosapi/topics_and_raw_types failed: service call failed"),
-    ("/rosapi/topics_and_raw_types", "status",
-     "rosbridge at {url} reported an error for /rosapi/topics_and_raw_types: Service"),
-    ("/rosapi/topics_and_raw_types", "not_json",
-     "rosbridge at {url} sent a malformed reply to /rosapi/topics_and_raw_types: not JSON"),
-    ("/rosapi/topics_and_raw_types", "bad_shape",
-     "malformed reply to /rosapi/topics_and_raw_types: topics is not a list of strings"),
-    ("/rosapi/services", "silent", "did not answer /rosapi/services within 0.5 s"),
-    ("/rosapi/service_type", "bad_shape", "malformed reply to /rosapi/service_type"),
-])
-def test_misbehaving_bridges_are_clear_errors(bridge: FakeRosbridge, service: str, fault: str,
-                                              message: str) -> None:
+@pytest.mark.parametrize(
+    ("service", "fault", "message"),
+    [
+        (
+            "/rosapi/topics_and_raw_types",
+            "silent",
+            "rosbridge at {url} did not answer /rosapi/topics_and_raw_types within 0.5 s",
+        ),
+        (
+            "/rosapi/topics_and_raw_types",
+            "drop",
+            "rosbridge at {url} closed the connection while /rosapi/topics_and_raw_types was pending",
+        ),
+        (
+            "/rosapi/topics_and_raw_types",
+            "fail",
+            "rosbridge at {url}: /rosapi/topics_and_raw_types failed: service call failed",
+        ),
+        (
+            "/rosapi/topics_and_raw_types",
+            "status",
+            "rosbridge at {url} reported an error for /rosapi/topics_and_raw_types: Service",
+        ),
+        (
+            "/rosapi/topics_and_raw_types",
+            "not_json",
+            "rosbridge at {url} sent a malformed reply to /rosapi/topics_and_raw_types: not JSON",
+        ),
+        (
+            "/rosapi/topics_and_raw_types",
+            "bad_shape",
+            "malformed reply to /rosapi/topics_and_raw_types: topics is not a list of strings",
+        ),
+        ("/rosapi/services", "silent", "did not answer /rosapi/services within 0.5 s"),
+        ("/rosapi/service_type", "bad_shape", "malformed reply to /rosapi/service_type"),
+    ],
+)
+def test_misbehaving_bridges_are_clear_errors(
+    bridge: FakeRosbridge, service: str, fault: str, message: str
+) -> None:
     bridge.faults[service] = fault
     started = time.monotonic()
     with pytest.raises(UserError) as caught:
@@ -116,32 +147,45 @@ def test_a_server_that_is_not_a_websocket_is_a_clear_error() -> None:
             discover(rosbridge_url=url, timeout=FAST)
 
 
-def test_unreachable_rosbridge_fails_cleanly(tmp_path: Path,
-                                             capsys: pytest.CaptureFixture[str]) -> None:
+def test_unreachable_rosbridge_fails_cleanly(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     (tmp_path / "robot.yaml").write_text(MANIFEST)
     before = snapshot(tmp_path)
     url = f"ws://127.0.0.1:{free_port()}"
     run = run_cli(capsys, "discover", str(tmp_path / "robot.yaml"), "--rosbridge", url)
-    assert_clean_failure(run, tmp_path, before, f"error: no rosbridge at {url} "
-                         "(connection refused)")
+    assert_clean_failure(
+        run, tmp_path, before, f"error: no rosbridge at {url} (connection refused)"
+    )
 
 
 def test_a_bridge_that_drops_mid_discovery_leaves_everything_untouched(
-        bridge: FakeRosbridge, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    bridge: FakeRosbridge, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     (tmp_path / "robot.yaml").write_text(MANIFEST)
     before = snapshot(tmp_path)
     bridge.faults["/rosapi/service_type"] = "drop"
-    run = run_cli(capsys, "discover", str(tmp_path / "robot.yaml"), "--rosbridge", bridge.url,
-                  "--timeout", "0.5")
-    assert_clean_failure(run, tmp_path, before, "closed the connection while "
-                         "/rosapi/service_type was pending")
+    run = run_cli(
+        capsys,
+        "discover",
+        str(tmp_path / "robot.yaml"),
+        "--rosbridge",
+        bridge.url,
+        "--timeout",
+        "0.5",
+    )
+    assert_clean_failure(
+        run, tmp_path, before, "closed the connection while /rosapi/service_type was pending"
+    )
 
 
-def test_discover_through_rosbridge_edits_the_manifest(bridge: FakeRosbridge, tmp_path: Path,
-                                                       capsys: pytest.CaptureFixture[str]) -> None:
+def test_discover_through_rosbridge_edits_the_manifest(
+    bridge: FakeRosbridge, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     (tmp_path / "robot.yaml").write_text(MANIFEST)
-    run = run_cli(capsys, "discover", str(tmp_path / "robot.yaml"), "--rosbridge", bridge.url,
-                  "--progress")
+    run = run_cli(
+        capsys, "discover", str(tmp_path / "robot.yaml"), "--rosbridge", bridge.url, "--progress"
+    )
     assert run.code == 0, run.err
     assert "probing 6/6" in run.err
     text = (tmp_path / "robot.yaml").read_text()

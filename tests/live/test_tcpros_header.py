@@ -19,8 +19,9 @@ from unityscaffold.interfaces.live.tcpros import (
     exchange,
 )
 
-_keys = st.text(st.characters(blacklist_characters="=", blacklist_categories=("Cs",)),
-                min_size=1, max_size=10)
+_keys = st.text(
+    st.characters(blacklist_characters="=", blacklist_categories=("Cs",)), min_size=1, max_size=10
+)
 _values = st.text(st.characters(blacklist_categories=("Cs",)), max_size=50)
 
 
@@ -33,11 +34,14 @@ def test_headers_round_trip(fields: dict[str, str]) -> None:
 
 def test_the_wire_format_is_length_prefixed_key_value_fields() -> None:
     assert encode_header({"md5sum": "*", "type": "a=b"}) == (
-        b"\x18\x00\x00\x00" b"\x08\x00\x00\x00md5sum=*" b"\x08\x00\x00\x00type=a=b")
+        b"\x18\x00\x00\x00\x08\x00\x00\x00md5sum=*\x08\x00\x00\x00type=a=b"
+    )
 
 
-@pytest.mark.parametrize("body", [b"\x01\x00", b"\x09\x00\x00\x00short", b"\x03\x00\x00\x00abc",
-                                  b"\x03\x00\x00\x00a=\xff"])
+@pytest.mark.parametrize(
+    "body",
+    [b"\x01\x00", b"\x09\x00\x00\x00short", b"\x03\x00\x00\x00abc", b"\x03\x00\x00\x00a=\xff"],
+)
 def test_malformed_headers_are_refused(body: bytes) -> None:
     with pytest.raises(MalformedHeader):
         decode_header(body)
@@ -59,6 +63,7 @@ def peer() -> Iterator[Callable[[bytes], int]]:
             with connection:
                 connection.recv(65536)
                 connection.sendall(reply)
+
         threading.Thread(target=serve, daemon=True).start()
         return int(server.getsockname()[1])
 
@@ -73,15 +78,21 @@ def test_exchange_returns_the_reply_header(peer: Callable[[bytes], int]) -> None
     assert reply == {"type": "std_msgs/String", "md5sum": "992ce8a1"}
 
 
-@pytest.mark.parametrize(("reply", "message"), [
-    (b"", "publisher of /imu closed the connection before sending its header"),
-    (encode_header({"error": "md5sums do not match"}),
-     "publisher of /imu rejected the probe: md5sums do not match"),
-    (b"\xff\xff\xff\x7f", "sent a 2147483647-byte header; that is not TCPROS"),
-    (b"\x05\x00\x00\x00\x01\x00\x00\x00x", "sent a malformed TCPROS header"),
-])
-def test_exchange_failures_name_the_peer(peer: Callable[[bytes], int], reply: bytes,
-                                         message: str) -> None:
+@pytest.mark.parametrize(
+    ("reply", "message"),
+    [
+        (b"", "publisher of /imu closed the connection before sending its header"),
+        (
+            encode_header({"error": "md5sums do not match"}),
+            "publisher of /imu rejected the probe: md5sums do not match",
+        ),
+        (b"\xff\xff\xff\x7f", "sent a 2147483647-byte header; that is not TCPROS"),
+        (b"\x05\x00\x00\x00\x01\x00\x00\x00x", "sent a malformed TCPROS header"),
+    ],
+)
+def test_exchange_failures_name_the_peer(
+    peer: Callable[[bytes], int], reply: bytes, message: str
+) -> None:
     port = peer(reply)
     with pytest.raises(UserError, match=message.replace("(", r"\(")):
         exchange("127.0.0.1", port, {"topic": "/imu"}, timeout=1, peer="publisher of /imu")

@@ -14,19 +14,64 @@ from unityscaffold.errors import LocatedError, ScaffoldError
 from unityscaffold.manifest import parse_manifest, starter_manifest
 
 PATH = Path("/fuzz/robot.yaml")
-KEYS = ["version", "ros", "project", "output", "scene", "connector", "topics", "services",
-        "components", "name", "type", "direction", "rate", "throttle", "queue", "role",
-        "gameobject", "fields", "script", "class", "create", "url", "timeout", "<<"]
+KEYS = [
+    "version",
+    "ros",
+    "project",
+    "output",
+    "scene",
+    "connector",
+    "topics",
+    "services",
+    "components",
+    "name",
+    "type",
+    "direction",
+    "rate",
+    "throttle",
+    "queue",
+    "role",
+    "gameobject",
+    "fields",
+    "script",
+    "class",
+    "create",
+    "url",
+    "timeout",
+    "<<",
+]
 SCALARS = st.one_of(
-    st.none(), st.booleans(), st.integers(-5, 100), st.floats(allow_nan=True),
-    st.sampled_from(["publish", "subscribe", "client", "/cmd_vel", "p/A", "Assets/S.unity",
-                     "@A/B:C", "@", "..", "/abs", "ws://h:1", "Assets/Gen", "yes"]),
+    st.none(),
+    st.booleans(),
+    st.integers(-5, 100),
+    st.floats(allow_nan=True),
+    st.sampled_from(
+        [
+            "publish",
+            "subscribe",
+            "client",
+            "/cmd_vel",
+            "p/A",
+            "Assets/S.unity",
+            "@A/B:C",
+            "@",
+            "..",
+            "/abs",
+            "ws://h:1",
+            "Assets/Gen",
+            "yes",
+        ]
+    ),
     st.text(max_size=8),
 )
-VALUES = st.recursive(SCALARS, lambda inner: st.one_of(
-    st.lists(inner, max_size=4),
-    st.dictionaries(st.one_of(st.sampled_from(KEYS), st.text(max_size=5)), inner, max_size=5),
-), max_leaves=25)
+VALUES = st.recursive(
+    SCALARS,
+    lambda inner: st.one_of(
+        st.lists(inner, max_size=4),
+        st.dictionaries(st.one_of(st.sampled_from(KEYS), st.text(max_size=5)), inner, max_size=5),
+    ),
+    max_leaves=25,
+)
 FUZZ = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
@@ -58,13 +103,19 @@ def test_mangled_starter_manifests_load_or_raise_a_scaffold_error(data: st.DataO
     text = re.sub(r"(?m)^#(  - |    \w)", r"\1", starter_manifest(2, "Assets/S.unity"))
     cut = data.draw(st.integers(0, len(text)))
     insert = data.draw(st.text(alphabet=" \t:-[]{}&*!#@'\"\n|>?,", max_size=4))
-    _load(text[:cut] + insert + text[cut + data.draw(st.integers(0, 3)):])
+    _load(text[:cut] + insert + text[cut + data.draw(st.integers(0, 3)) :])
 
 
 def test_deep_nesting_and_alias_bombs_are_user_errors() -> None:
-    for text in ["[" * 1100, "a: " + "{b: " * 3000, "[" * 300 + "]" * 300,
-                 "a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
-                     f"{c}: &{c} [*{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}]\n"
-                     for p, c in zip("abcdefgh", "bcdefghi", strict=True))]:
+    for text in [
+        "[" * 1100,
+        "a: " + "{b: " * 3000,
+        "[" * 300 + "]" * 300,
+        "a: &a [x, x, x, x, x, x, x, x, x]\n"
+        + "".join(
+            f"{c}: &{c} [*{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}]\n"
+            for p, c in zip("abcdefgh", "bcdefghi", strict=True)
+        ),
+    ]:
         with contextlib.suppress(ScaffoldError):
             parse_manifest(text, PATH)

@@ -28,8 +28,9 @@ def _tree(root: Path) -> list[tuple[str, int]]:
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.stem for c in CASES])
-def test_invalid_manifest_gives_its_expected_message(case: Path, tmp_path: Path,
-                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+def test_invalid_manifest_gives_its_expected_message(
+    case: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     shutil.copyfile(case, tmp_path / "robot.yaml")
     monkeypatch.chdir(tmp_path)
     before = _tree(tmp_path)

@@ -39,14 +39,15 @@ def test_ros1_sample_loads_every_key_with_its_value() -> None:
     assert m.output_dir == m.project_root / "Assets/RosGenerated/Robot"
     assert m.output == "Assets/RosGenerated/Robot"
     assert m.namespace == "MyRobot.Ros"
-    assert m.interfaces == ((VALID.parent / "catkin_ws/src").absolute(),
-                            (VALID / "defs").absolute())
+    assert m.interfaces == (
+        (VALID.parent / "catkin_ws/src").absolute(),
+        (VALID / "defs").absolute(),
+    )
     c = m.connector
     assert (c.gameobject, c.url, c.timeout) == ("Ros/Connector", "ws://192.168.1.10:9090", 5)
     assert (c.serializer, c.protocol) == (Serializer.NEWTONSOFT, Protocol.WEBSOCKET_NET)
     cmd, odom, joints = m.topics
-    assert (cmd.direction, cmd.rate, cmd.class_name) == (Direction.PUBLISH, 20.0,
-                                                          "CmdVelPublisher")
+    assert (cmd.direction, cmd.rate, cmd.class_name) == (Direction.PUBLISH, 20.0, "CmdVelPublisher")
     assert cmd.gameobject == "Ros/Connector"  # defaults to the connector's GameObject
     assert (odom.throttle, odom.queue, odom.create) == (100, 2, False)
     assert (odom.gameobject, odom.scene) == ("Robot/base_link", "Assets/Scenes/Other.unity")
@@ -59,7 +60,9 @@ def test_ros1_sample_loads_every_key_with_its_value() -> None:
 def test_component_fields_keep_scalars_structs_lists_and_references() -> None:
     twist, lidar = load_manifest(VALID / "ros1.yaml").components
     assert [(f.name, f.value) for f in twist.fields] == [
-        ("Topic", "/cmd_vel_unity"), ("TimeStep", 0.1), ("EnsureThreadSafety", True),
+        ("Topic", "/cmd_vel_unity"),
+        ("TimeStep", 0.1),
+        ("EnsureThreadSafety", True),
         ("SubscribedTransform", ObjectPath("Robot/base_link")),
     ]
     assert lidar.script == "Assets/Scripts/Lidar.cs"
@@ -77,10 +80,18 @@ def test_ros2_sample_gets_every_default() -> None:
     assert m.project_root == VALID.absolute()
     assert m.output == "Assets/RosGenerated"
     assert (m.namespace, m.include_shipped, m.interfaces, m.create_gameobjects) == (
-        None, False, (), True)
+        None,
+        False,
+        (),
+        True,
+    )
     c = m.connector
     assert (c.scene, c.gameobject, c.url, c.timeout) == (
-        "Assets/Scenes/Main.unity", "RosConnector", "ws://localhost:9090", 10)
+        "Assets/Scenes/Main.unity",
+        "RosConnector",
+        "ws://localhost:9090",
+        10,
+    )
     assert (c.serializer, c.protocol) == (Serializer.MICROSOFT, Protocol.WEBSOCKET_SHARP)
     assert [(t.rate, t.throttle, t.queue) for t in m.topics] == [(None,) * 3, (None,) * 3]
     assert m.services[0].class_name == "AddTwoIntsClient"
@@ -151,8 +162,7 @@ def test_yaml_anchors_and_merge_keys_are_expanded() -> None:
           - &sub {name: /a, type: p/A, direction: subscribe, throttle: 50}
           - {<<: *sub, name: /b}
         """)
-    assert [(t.name, t.throttle) for t in m.topics] == [
-        ("/a", 50), ("/b", 50)]
+    assert [(t.name, t.throttle) for t in m.topics] == [("/a", 50), ("/b", 50)]
 
 
 def test_empty_lists_and_connector_are_accepted() -> None:
@@ -208,8 +218,9 @@ def test_output_through_a_symlink_out_of_the_project_is_rejected(tmp_path: Path)
     (tmp_path / "project/Assets").mkdir(parents=True)
     (tmp_path / "project/Assets/Gen").symlink_to(tmp_path / "outside")
     manifest = tmp_path / "robot.yaml"
-    manifest.write_text("version: 1\nros: 1\nproject: project\noutput: Assets/Gen/Code\n"
-                        "scene: Assets/S.unity\n")
+    manifest.write_text(
+        "version: 1\nros: 1\nproject: project\noutput: Assets/Gen/Code\nscene: Assets/S.unity\n"
+    )
     with pytest.raises(LocatedError) as caught:
         load_manifest(manifest)
     (diagnostic,) = caught.value.diagnostics
@@ -237,13 +248,17 @@ def test_scene_through_a_symlink_out_of_the_project_is_rejected(tmp_path: Path) 
     assert caught.value.location.line == 4
 
 
-@pytest.mark.parametrize(("content", "message"), [
-    (None, "does not exist"),
-    ("dir", "is a folder"),
-    (b"version: 1\nros: \xff\n", "not UTF-8"),
-])
-def test_unreadable_manifest_files_are_user_errors(tmp_path: Path, content: object,
-                                                   message: str) -> None:
+@pytest.mark.parametrize(
+    ("content", "message"),
+    [
+        (None, "does not exist"),
+        ("dir", "is a folder"),
+        (b"version: 1\nros: \xff\n", "not UTF-8"),
+    ],
+)
+def test_unreadable_manifest_files_are_user_errors(
+    tmp_path: Path, content: object, message: str
+) -> None:
     path = tmp_path / "robot.yaml"
     if content == "dir":
         path.mkdir()

@@ -18,14 +18,35 @@ VALID = sorted((HERE / "valid").glob("*.yaml"))
 REPO = HERE.parent.parent
 # Bad manifests whose mistake is structural, so the schema must reject them too.
 SCHEMA_REJECTS = [
-    "unknown_key_misspelled", "unknown_top_level_key", "unknown_key_no_suggestion",
-    "enum_direction", "enum_role", "enum_serializer_and_protocol", "rate_on_subscribe",
-    "throttle_and_queue_on_publish", "rate_not_positive", "throttle_negative_queue_zero",
-    "missing_required_keys", "missing_version_and_ros", "unsupported_version", "ros_version_3",
-    "ros_version_as_text", "output_not_in_assets", "scene_not_unity_file", "topic_name_invalid",
-    "type_invalid", "service_type_on_topic", "message_type_on_service", "url_invalid",
-    "class_override_not_identifier", "namespace_invalid", "topics_not_a_list",
-    "entry_not_a_mapping", "number_for_text", "boolean_written_yes", "component_empty_field_value",
+    "unknown_key_misspelled",
+    "unknown_top_level_key",
+    "unknown_key_no_suggestion",
+    "enum_direction",
+    "enum_role",
+    "enum_serializer_and_protocol",
+    "rate_on_subscribe",
+    "throttle_and_queue_on_publish",
+    "rate_not_positive",
+    "throttle_negative_queue_zero",
+    "missing_required_keys",
+    "missing_version_and_ros",
+    "unsupported_version",
+    "ros_version_3",
+    "ros_version_as_text",
+    "output_not_in_assets",
+    "scene_not_unity_file",
+    "topic_name_invalid",
+    "type_invalid",
+    "service_type_on_topic",
+    "message_type_on_service",
+    "url_invalid",
+    "class_override_not_identifier",
+    "namespace_invalid",
+    "topics_not_a_list",
+    "entry_not_a_mapping",
+    "number_for_text",
+    "boolean_written_yes",
+    "component_empty_field_value",
 ]
 
 
@@ -53,7 +74,8 @@ def _validator() -> Any:
 def test_shipped_schema_is_the_generated_one() -> None:
     shipped = (REPO / "schema" / "robot.schema.json").read_text(encoding="utf-8")
     assert shipped == render_schema(), (
-        "regenerate: python -m unityscaffold.manifest.schema > schema/robot.schema.json")
+        "regenerate: python -m unityscaffold.manifest.schema > schema/robot.schema.json"
+    )
 
 
 def test_schema_is_found_at_runtime() -> None:
@@ -61,8 +83,10 @@ def test_schema_is_found_at_runtime() -> None:
 
 
 def _object_schemas(schema: dict[str, Any]) -> dict[str, dict[str, Any]]:
-    return {"manifest": schema, **{name: d for name, d in schema["$defs"].items()
-                                   if d.get("type") == "object"}}
+    return {
+        "manifest": schema,
+        **{name: d for name, d in schema["$defs"].items() if d.get("type") == "object"},
+    }
 
 
 def test_schema_and_validator_allow_the_same_keys() -> None:
@@ -99,9 +123,27 @@ def test_structural_mistakes_fail_the_schema_too(name: str) -> None:
 def test_patterns_mean_the_same_in_python_and_json_schema() -> None:
     jsonschema = _jsonschema()
     import re
-    samples = ["/cmd_vel", "cmd_vel", "/a/_b", "/cmd//vel", "/scan/", "2d", "p/msg/A", "p/A",
-               "p/srv/A", "Robot/base_link", "/Robot", "Main.unity", "ws://h:9090/x",
-               "My.Ns", "a-b", "ws://", "_x", "A_1"]
+
+    samples = [
+        "/cmd_vel",
+        "cmd_vel",
+        "/a/_b",
+        "/cmd//vel",
+        "/scan/",
+        "2d",
+        "p/msg/A",
+        "p/A",
+        "p/srv/A",
+        "Robot/base_link",
+        "/Robot",
+        "Main.unity",
+        "ws://h:9090/x",
+        "My.Ns",
+        "a-b",
+        "ws://",
+        "_x",
+        "A_1",
+    ]
     for name, pattern in spec.patterns().items():
         check = jsonschema.Draft202012Validator({"type": "string", "pattern": pattern})
         for sample in samples:
@@ -110,13 +152,19 @@ def test_patterns_mean_the_same_in_python_and_json_schema() -> None:
 
 def test_docs_describe_every_key_in_its_section() -> None:
     docs = (REPO / "docs" / "manifest.md").read_text(encoding="utf-8")
-    headings = {"manifest": "## Top level", "connector": "## `connector`",
-                "topic": "## `topics`", "service": "## `services`",
-                "component": "## `components`"}
+    headings = {
+        "manifest": "## Top level",
+        "connector": "## `connector`",
+        "topic": "## `topics`",
+        "service": "## `services`",
+        "component": "## `components`",
+    }
     for section in spec.SECTIONS:
         start = docs.index(headings[section.ref])
         end = docs.find("\n## ", start + 1)
-        rows = [line.split("|")[1].strip().strip("`")
-                for line in docs[start:end if end > 0 else None].splitlines()
-                if line.startswith("| `")]
+        rows = [
+            line.split("|")[1].strip().strip("`")
+            for line in docs[start : end if end > 0 else None].splitlines()
+            if line.startswith("| `")
+        ]
         assert rows == list(section.names), section.label

@@ -61,27 +61,47 @@ def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSp
         raise LocatedError.wrap(where, error) from None
     if not isinstance(found, kind):
         wanted = "a message" if kind is MessageSpec else "a service"
-        raise LocatedError.at(where, f"'{item.type}' is a {found.kind.value}, not {wanted}",
-                              expected=f"{wanted} type such as "
-                              + ("geometry_msgs/Twist" if kind is MessageSpec else "std_srvs/Trigger"))
+        raise LocatedError.at(
+            where,
+            f"'{item.type}' is a {found.kind.value}, not {wanted}",
+            expected=f"{wanted} type such as "
+            + ("geometry_msgs/Twist" if kind is MessageSpec else "std_srvs/Trigger"),
+        )
     return found
 
 
-def _view(manifest: Manifest, item: Topic | Service, spec: MessageSpec | ServiceSpec,
-          generation: Generation) -> Script:
-    common = {"class_name": item.class_name, "ros_type": spec.full_name,
-              "manifest": manifest.path.name}
+def _view(
+    manifest: Manifest,
+    item: Topic | Service,
+    spec: MessageSpec | ServiceSpec,
+    generation: Generation,
+) -> Script:
+    common = {
+        "class_name": item.class_name,
+        "ros_type": spec.full_name,
+        "manifest": manifest.path.name,
+    }
     if isinstance(item, Topic):
         message = generation.classes[spec.full_name]["message"].qualified
         if item.direction is Direction.PUBLISH:
-            return PublisherScript(**common, topic=item.name, message_type=message,
-                                   rate=item.rate or 0.0)
-        return SubscriberScript(**common, topic=item.name, message_type=message,
-                                throttle=item.throttle or 0, queue=item.queue or 1)
+            return PublisherScript(
+                **common, topic=item.name, message_type=message, rate=item.rate or 0.0
+            )
+        return SubscriberScript(
+            **common,
+            topic=item.name,
+            message_type=message,
+            throttle=item.throttle or 0,
+            queue=item.queue or 1,
+        )
     classes = generation.classes[f"{spec.package}/srv/{spec.name}"]
     kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
-    return kind(**common, service=item.name, request_type=classes["request"].qualified,
-                response_type=classes["response"].qualified)
+    return kind(
+        **common,
+        service=item.name,
+        request_type=classes["request"].qualified,
+        response_type=classes["response"].qualified,
+    )
 
 
 def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[DesiredFile]:
@@ -100,27 +120,44 @@ def _check_class_names(manifest: Manifest, scripts: dict[str, ScriptInfo]) -> No
     """A generated script must not share its class name with ROS#'s or another script's:
     Unity and the manifest's ``components`` find scripts by that name."""
     ours = manifest.asset_path(manifest.output_dir / "Scripts")
-    elsewhere = {info.class_name: info.path for info in scripts.values()
-                 if not info.path.startswith(ours + "/")}
+    elsewhere = {
+        info.class_name: info.path
+        for info in scripts.values()
+        if not info.path.startswith(ours + "/")
+    }
     for item in (*manifest.topics, *manifest.services):
-        clash = ("ROS#'s stock script" if item.class_name in RESERVED_NAMES
-                 else elsewhere.get(item.class_name))
+        clash = (
+            "ROS#'s stock script"
+            if item.class_name in RESERVED_NAMES
+            else elsewhere.get(item.class_name)
+        )
         if clash:
-            where = item.locations.of("class") if item.locations.has("class") else item.locations.of("name")
-            raise LocatedError.at(where, f"the script generated for {item.name} would be named "
-                                  f"{item.class_name}, like {clash}",
-                                  hint="give this entry another name with `class:`")
+            where = (
+                item.locations.of("class")
+                if item.locations.has("class")
+                else item.locations.of("name")
+            )
+            raise LocatedError.at(
+                where,
+                f"the script generated for {item.name} would be named "
+                f"{item.class_name}, like {clash}",
+                hint="give this entry another name with `class:`",
+            )
 
 
-def plan_code(manifest: Manifest, registry: Registry, salt: str,
-              scripts: dict[str, ScriptInfo]) -> CodePlan:
+def plan_code(
+    manifest: Manifest, registry: Registry, salt: str, scripts: dict[str, ScriptInfo]
+) -> CodePlan:
     """Everything the manifest's topics and services need in C#, as desired files."""
     _check_class_names(manifest, scripts)
     items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
-    generation = generate(registry, [spec for _, spec in items],
-                          Options(manifest.ros, manifest.include_shipped, manifest.namespace))
+    generation = generate(
+        registry,
+        [spec for _, spec in items],
+        Options(manifest.ros, manifest.include_shipped, manifest.namespace),
+    )
     messages_dir = manifest.output_dir / "Messages"
     scripts_dir = manifest.output_dir / "Scripts"
     generated, created_once = [], []
@@ -132,20 +169,28 @@ def plan_code(manifest: Manifest, registry: Registry, salt: str,
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
         guid = meta_guid(path.with_name(path.name + ".meta"), salt, manifest.asset_path(path))
-        user_guid = meta_guid(user_path.with_name(user_path.name + ".meta"), salt,
-                              manifest.asset_path(user_path))
+        user_guid = meta_guid(
+            user_path.with_name(user_path.name + ".meta"), salt, manifest.asset_path(user_path)
+        )
         generated.append(DesiredFile(path, rendered.plumbing.encode()))
         created_once += [
             DesiredFile(user_path, rendered.user.encode(), create_only=True),
             DesiredFile(path.with_name(path.name + ".meta"), monoscript_meta(guid).encode(), True),
-            DesiredFile(user_path.with_name(user_path.name + ".meta"),
-                        monoscript_meta(user_guid).encode(), True),
+            DesiredFile(
+                user_path.with_name(user_path.name + ".meta"),
+                monoscript_meta(user_guid).encode(),
+                True,
+            ),
         ]
         kind = "topic" if isinstance(item, Topic) else "service"
         scripts.append(PlannedScript(f"{kind} {item.name}", view, path, user_path, guid, item))
     # Every folder that will hold a planned file needs a folder .meta (the generator's own
     # covers Messages/ and below; these are the ones above it and Scripts/).
-    folders = {parent for d in (*generated, *created_once) for parent in d.path.parents
-               if messages_dir not in parent.parents and parent != messages_dir}
+    folders = {
+        parent
+        for d in (*generated, *created_once)
+        for parent in d.path.parents
+        if messages_dir not in parent.parents and parent != messages_dir
+    }
     created_once += _folder_metas(manifest, folders, salt)
     return CodePlan(tuple(generated), tuple(created_once), tuple(scripts), generation)

@@ -66,8 +66,10 @@ def _change(want: DesiredFile) -> FileChange:
         raise UserError(f"cannot write {path}: a folder of that name exists")
     blocker = _blocking_ancestor(path)
     if blocker is not None:
-        raise UserError(f"cannot write {path}: {blocker} exists and is not a folder",
-                        hint="choose another output folder, or move that file away")
+        raise UserError(
+            f"cannot write {path}: {blocker} exists and is not a folder",
+            hint="choose another output folder, or move that file away",
+        )
     try:
         current = path.read_bytes()
     except FileNotFoundError:
@@ -108,8 +110,9 @@ def _new_file_mode() -> int:
 
 
 def _write_temp(change: FileChange, mode: int) -> Path:
-    handle, name = tempfile.mkstemp(dir=change.path.parent, prefix=f".{change.path.name}.",
-                                    suffix=".tmp")
+    handle, name = tempfile.mkstemp(
+        dir=change.path.parent, prefix=f".{change.path.name}.", suffix=".tmp"
+    )
     temp = Path(name)
     try:
         with os.fdopen(handle, "wb") as stream:
@@ -148,8 +151,10 @@ def write_files(changes: Sequence[FileChange]) -> list[Path]:
         except OSError as exc:
             for leftover, _ in temps[done:]:
                 leftover.unlink(missing_ok=True)
-            raise UserError(f"cannot replace {path}: {exc.strerror}; {done} of {len(temps)} "
-                            "files were already written",
-                            hint="fix the cause (a file locked by another program?) and run "
-                            "again: unchanged files are skipped") from None
+            raise UserError(
+                f"cannot replace {path}: {exc.strerror}; {done} of {len(temps)} "
+                "files were already written",
+                hint="fix the cause (a file locked by another program?) and run "
+                "again: unchanged files are skipped",
+            ) from None
     return [path for _, path in temps]

@@ -31,7 +31,9 @@ def _template_files(context: dict[str, str]) -> list[tuple[str, bytes]]:
         relative = source.relative_to(root).as_posix()
         relative = _RENAMES.get(relative, relative)
         if relative.endswith(".jinja"):
-            text = environment().get_template(f"{_TEMPLATE_ROOT}/{source.relative_to(root).as_posix()}")
+            text = environment().get_template(
+                f"{_TEMPLATE_ROOT}/{source.relative_to(root).as_posix()}"
+            )
             files.append((relative[: -len(".jinja")], text.render(**context).encode("utf-8")))
         else:
             files.append((relative, source.read_bytes()))
@@ -43,19 +45,25 @@ def init_project(directory: Path, ros: int, *, force: bool = False) -> list[File
     if directory.exists() and not directory.is_dir():
         raise UserError(f"{directory} exists and is not a folder")
     if directory.is_dir() and any(directory.iterdir()) and not force:
-        raise UserError(f"{directory} is not empty",
-                        hint="choose a new folder, or pass --force to add the template's files "
-                        "(existing files are kept)")
+        raise UserError(
+            f"{directory} is not empty",
+            hint="choose a new folder, or pass --force to add the template's files "
+            "(existing files are kept)",
+        )
     name = directory.resolve().name
     context = {
         "product_name": name,
         "product_guid": hashlib.md5(f"unityscaffold-init:{name}".encode()).hexdigest(),
         "rossharp_version": DEFAULT_VERSION,
     }
-    desired = [DesiredFile(directory / rel, data, create_only=True)
-               for rel, data in _template_files(context)]
+    desired = [
+        DesiredFile(directory / rel, data, create_only=True)
+        for rel, data in _template_files(context)
+    ]
     manifest = starter_manifest(ros, MAIN_SCENE, schema=None)
-    desired.append(DesiredFile(directory / "robot.yaml", manifest.encode("utf-8"), create_only=True))
+    desired.append(
+        DesiredFile(directory / "robot.yaml", manifest.encode("utf-8"), create_only=True)
+    )
     changes = plan_files(desired)
     write_files(changes)
     return changes

@@ -48,8 +48,13 @@ def asset_path(value: object) -> str:
     if not isinstance(value, str):
         raise TypeError(f"expected a path, found {value!r}")
     parts = PurePosixPath(value).parts
-    if (not parts or parts[0] != "Assets" or ".." in parts or "\\" in value
-            or PurePosixPath(value).is_absolute()):
+    if (
+        not parts
+        or parts[0] != "Assets"
+        or ".." in parts
+        or "\\" in value
+        or PurePosixPath(value).is_absolute()
+    ):
         raise ValueError(f"{value!r} is not a path inside the project's Assets/ folder")
     return value
 
@@ -97,9 +102,11 @@ class LockFile:
                 components=tuple(_component(c) for c in data["components"]),
             )
         except (ValueError, KeyError, TypeError, AttributeError) as exc:
-            raise UserError(f"{path} is not a valid unityscaffold lock file: {exc}",
-                            hint="restore it from git, or delete it to start over (apply will "
-                            "then treat existing generated files as hand-made)") from None
+            raise UserError(
+                f"{path} is not a valid unityscaffold lock file: {exc}",
+                hint="restore it from git, or delete it to start over (apply will "
+                "then treat existing generated files as hand-made)",
+            ) from None
 
     def render(self) -> str:
         """Deterministic JSON: sorted keys and entries, LF, final newline."""
@@ -109,8 +116,12 @@ class LockFile:
             "files": dict(sorted(self.files.items())),
             "user_files": dict(sorted(self.user_files.items())),
             "components": [
-                {"scene": c.scene, "gameobject": c.gameobject, "script": c.script,
-                 "source": c.source}
+                {
+                    "scene": c.scene,
+                    "gameobject": c.gameobject,
+                    "script": c.script,
+                    "source": c.source,
+                }
                 for c in sorted(set(self.components))
             ],
         }

@@ -65,9 +65,11 @@ def _settings_change(manifest: Manifest) -> list[DesiredFile]:
     except (OSError, UnicodeDecodeError):
         text = ""
     if not text.startswith("%YAML"):
-        raise UserError(f"{path} is not a text (YAML) settings file",
-                        hint="set Edit > Project Settings > Editor > Asset Serialization Mode to "
-                        "'Force Text'; apply keeps the ROS2 define there in line with `ros`")
+        raise UserError(
+            f"{path} is not a text (YAML) settings file",
+            hint="set Edit > Project Settings > Editor > Asset Serialization Mode to "
+            "'Force Text'; apply keeps the ROS2 define there in line with `ros`",
+        )
     wanted = with_ros_define(text, manifest.ros is Dialect.ROS2)
     return [DesiredFile(path, wanted.encode("utf-8"))] if wanted != text else []
 
@@ -98,18 +100,22 @@ def _check_inside(project: Path, paths: list[Path]) -> None:
     for path in paths:
         real = path.parent.resolve() / path.name
         if root not in real.parents:
-            raise UserError(f"refusing to touch {path}: it resolves to {real}, outside the "
-                            f"Unity project {root}",
-                            hint="a folder on the way is a symbolic link; replace it with a real "
-                            "folder inside the project")
+            raise UserError(
+                f"refusing to touch {path}: it resolves to {real}, outside the "
+                f"Unity project {root}",
+                hint="a folder on the way is a symbolic link; replace it with a real "
+                "folder inside the project",
+            )
 
 
 def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) -> Plan:
     """Compute everything ``apply`` would do; raises ``UserError`` for bad input."""
     project = manifest.project_root
     if not (project / "Assets").is_dir():
-        raise UserError(f"{project} is not a Unity project (no Assets/ folder)",
-                        hint="set `project:` in the manifest, or create one with scaffold init")
+        raise UserError(
+            f"{project} is not a Unity project (no Assets/ folder)",
+            hint="set `project:` in the manifest, or create one with scaffold init",
+        )
     lock = LockFile.read(lock_path(manifest.path))
     salt = project_salt(project)
     scripts = script_index(project)
@@ -128,13 +134,22 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
     deletions = pruning.deletions
     notes = user.notes + pruning.notes
     new_lock = LockFile(
-        files={**pruning.kept_files,
-               **{manifest.asset_path(d.path): sha256(d.content) for d in generated}},
+        files={
+            **pruning.kept_files,
+            **{manifest.asset_path(d.path): sha256(d.content) for d in generated},
+        },
         user_files={**pruning.kept_user_files, **user.digests},
         components=tuple(sorted({c for s in scenes for c in s.components})),
     )
     _check_inside(project, [d.path for d in desired] + deletions)
     desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
     changes = plan_files(desired)
-    return Plan(manifest, changes, deletions, scenes, conflicts, notes,
-                skipped_types=len(code.generation.skipped))
+    return Plan(
+        manifest,
+        changes,
+        deletions,
+        scenes,
+        conflicts,
+        notes,
+        skipped_types=len(code.generation.skipped),
+    )

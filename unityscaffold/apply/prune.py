@@ -46,8 +46,10 @@ def plan_pruning(manifest: Manifest, lock: LockFile, wanted: set[str]) -> Prunin
         state = _untouched(root / relative, digest, relative, result.notes)
         if state is False:
             result.kept_user_files[relative] = digest
-            result.notes.append(f"kept {relative} (you edited it) and its generated half; delete "
-                                "both when you no longer need them")
+            result.notes.append(
+                f"kept {relative} (you edited it) and its generated half; delete "
+                "both when you no longer need them"
+            )
         elif state:
             result.deletions.append(root / relative)
     kept_plumbing = {r[: -len(_USER_SUFFIX)] + ".cs" for r in result.kept_user_files}
@@ -60,8 +62,9 @@ def plan_pruning(manifest: Manifest, lock: LockFile, wanted: set[str]) -> Prunin
         state = _untouched(root / relative, digest, relative, result.notes)
         if state is False:
             result.kept_files[relative] = digest
-            result.notes.append(f"kept {relative}: edited since apply made it; delete it yourself "
-                                "if unused")
+            result.notes.append(
+                f"kept {relative}: edited since apply made it; delete it yourself if unused"
+            )
         elif state:
             result.deletions.append(root / relative)
     metas = [p.with_name(p.name + ".meta") for p in result.deletions]

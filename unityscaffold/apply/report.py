@@ -61,8 +61,11 @@ def plan_json(plan: Plan) -> dict[str, Any]:
         "manifest": str(plan.manifest.path),
         "project": str(plan.manifest.project_root),
         "in_sync": plan.in_sync and not plan.conflicts,
-        "files": [{"path": plan.relative(c.path), "action": c.action.value}
-                  for c in plan.changes if c.writes],
+        "files": [
+            {"path": plan.relative(c.path), "action": c.action.value}
+            for c in plan.changes
+            if c.writes
+        ],
         "removed": [plan.relative(p) for p in plan.deletions],
         "scenes": [{"path": s.relative, "actions": s.actions} for s in plan.scenes if s.actions],
         "conflicts": plan.conflicts,

@@ -55,9 +55,12 @@ _REGENERATED = {
 # ROS#'s stock components, all built on UnityPublisher/UnitySubscriber/UnityServiceProvider,
 # which carry [RequireComponent(typeof(RosConnector))]. (The 2.1.0-2.2.0 table lacks the GUIDs of
 # the last three subscribers; with such a pin they resolve only from the installed package.)
-STOCK_SCRIPTS = frozenset(_RESTORED) - {"RosConnector", "UnityPublisher", "UnitySubscriber",
-                                         "UnityServiceProvider"} | {
-    "StringPublisher", "StringSubscriber", "GetParamServiceProvider"}
+STOCK_SCRIPTS = frozenset(_RESTORED) - {
+    "RosConnector",
+    "UnityPublisher",
+    "UnitySubscriber",
+    "UnityServiceProvider",
+} | {"StringPublisher", "StringSubscriber", "GetParamServiceProvider"}
 RESERVED_NAMES = frozenset(_RESTORED) | STOCK_SCRIPTS
 _VERSION = re.compile(r"#v?(\d+)\.(\d+)\.(\d+)")
 
@@ -89,8 +92,11 @@ class RosSharp:
 
     @classmethod
     def of(cls, project: Path, scripts: dict[str, ScriptInfo]) -> RosSharp:
-        installed = {info.class_name: guid for guid, info in sorted(scripts.items())
-                     if "ros-sharp" in info.path or "RosBridgeClient" in info.path}
+        installed = {
+            info.class_name: guid
+            for guid, info in sorted(scripts.items())
+            if "ros-sharp" in info.path or "RosBridgeClient" in info.path
+        }
         return cls(pinned_version(project), installed)
 
     def _table(self) -> dict[str, str]:

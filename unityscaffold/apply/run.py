@@ -39,18 +39,22 @@ def load_registry(manifest: Manifest, *, use_environment: bool) -> Registry:
     """
     for folder in manifest.interfaces:
         if not folder.is_dir():
-            raise LocatedError.at(manifest.locations.of("interfaces"),
-                                  f"interface folder {folder} does not exist",
-                                  hint="paths in `interfaces` are relative to the manifest")
+            raise LocatedError.at(
+                manifest.locations.of("interfaces"),
+                f"interface folder {folder} does not exist",
+                hint="paths in `interfaces` are relative to the manifest",
+            )
     return Registry.load(manifest.ros, list(manifest.interfaces), use_environment=use_environment)
 
 
-def run(manifest_path: Path, mode: Mode, *, force: bool = False,
-        use_environment: bool = False) -> Outcome:
+def run(
+    manifest_path: Path, mode: Mode, *, force: bool = False, use_environment: bool = False
+) -> Outcome:
     """Plan the manifest's project, then show (PLAN), compare (CHECK) or write (APPLY) it."""
     manifest = load_manifest(manifest_path)
-    plan = make_plan(manifest, load_registry(manifest, use_environment=use_environment),
-                     force=force)
+    plan = make_plan(
+        manifest, load_registry(manifest, use_environment=use_environment), force=force
+    )
     outcome = Outcome(mode, plan)
     if mode is not Mode.APPLY:
         return outcome
@@ -69,8 +73,10 @@ def run(manifest_path: Path, mode: Mode, *, force: bool = False,
         try:
             path.unlink(missing_ok=True)
         except OSError as exc:
-            raise UserError(f"cannot remove {path}: {exc.strerror}; the other changes were written",
-                            hint="fix the cause and run apply again to finish the clean-up") from None
+            raise UserError(
+                f"cannot remove {path}: {exc.strerror}; the other changes were written",
+                hint="fix the cause and run apply again to finish the clean-up",
+            ) from None
         outcome.deleted.append(path)
     outcome.written += write_files([c for c in plan.changes if c.path == lock])
     return outcome

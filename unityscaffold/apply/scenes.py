@@ -58,8 +58,15 @@ class _SceneEditor:
         except UserError as error:
             raise LocatedError.wrap(where, error) from None
 
-    def attach(self, path: str, create: bool, script: ScriptRef, fields: list[tuple[str, FieldValue]],
-               where: SourceLocation, source: str):
+    def attach(
+        self,
+        path: str,
+        create: bool,
+        script: ScriptRef,
+        fields: list[tuple[str, FieldValue]],
+        where: SourceLocation,
+        source: str,
+    ):
         go = self.gameobject(path, create, where)
         self.wanted.add((path, script.guid))
         existed = self.doc.find_component(go, script.guid, script.file_id) is not None
@@ -76,7 +83,9 @@ class _SceneEditor:
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
         if not existed or (path, script.guid) in self.owned:
-            self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, source))
+            self.plan.components.append(
+                LockComponent(self.plan.relative, path, script.guid, source)
+            )
         return component
 
     def prune(self, previous: Iterable[LockComponent], keep: set[tuple[str, str]]) -> None:
@@ -114,7 +123,9 @@ class _Context:
         """A script this plan generates: known by name before its file exists on disk."""
         for script in self.code.scripts:
             if script.view.class_name == class_name:
-                return ScriptRef(script.guid, class_name=class_name, namespace=script.view.namespace)
+                return ScriptRef(
+                    script.guid, class_name=class_name, namespace=script.view.namespace
+                )
         return None
 
     def class_of(self, guid: str) -> str | None:
@@ -130,8 +141,9 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
     try:
         if item.script.endswith(".cs"):
             return script_ref_for_file(ctx.manifest.project_root / item.script)
-        found = ctx.planned(item.script) or find_script(ctx.manifest.project_root, item.script,
-                                                        index=ctx.scripts)
+        found = ctx.planned(item.script) or find_script(
+            ctx.manifest.project_root, item.script, index=ctx.scripts
+        )
         if found is None and ctx.rossharp.knows(item.script):
             found = ctx.rossharp.script(item.script)
     except UserError as error:
@@ -139,14 +151,18 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
     if found is None:
         names = sorted({info.class_name for info in ctx.scripts.values()})
         close = difflib.get_close_matches(item.script, names, n=3)
-        hint = f"did you mean {' or '.join(close)}?" if close else (
-            "give the script's class name (its file name) or its path, such as Assets/Foo.cs")
+        hint = (
+            f"did you mean {' or '.join(close)}?"
+            if close
+            else ("give the script's class name (its file name) or its path, such as Assets/Foo.cs")
+        )
         raise LocatedError.at(where, f"no script named {item.script} in the project", hint=hint)
     return found
 
 
-def _reference(ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath,
-               where: SourceLocation) -> ObjectRef:
+def _reference(
+    ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath, where: SourceLocation
+) -> ObjectRef:
     try:
         go = doc.find_gameobject(value.path)
     except UserError as error:
@@ -157,14 +173,19 @@ def _reference(ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath,
     for comp in doc.components_of(go):
         script_name = ctx.class_of(comp.script.guid) if comp.script else None
         if wanted in (comp.type_name, script_name) or (
-                wanted == "Transform" and comp.class_id == _TRANSFORM_CLASS_ID):
+            wanted == "Transform" and comp.class_id == _TRANSFORM_CLASS_ID
+        ):
             return ObjectRef(comp.file_id)
-    raise LocatedError.at(where, f"{value.path} has no {wanted} component",
-                          hint="components there: " + ", ".join(c.type_name for c in doc.components_of(go)))
+    raise LocatedError.at(
+        where,
+        f"{value.path} has no {wanted} component",
+        hint="components there: " + ", ".join(c.type_name for c in doc.components_of(go)),
+    )
 
 
-def _value(ctx: _Context, doc: SceneDocument, name: str, value: object,
-           where: SourceLocation) -> FieldValue:
+def _value(
+    ctx: _Context, doc: SceneDocument, name: str, value: object, where: SourceLocation
+) -> FieldValue:
     if isinstance(value, ObjectPath):
         return _reference(ctx, doc, name, value, where)
     if isinstance(value, StructValue):
@@ -181,25 +202,36 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
     connector_id = 0
     connector_script = None
     if m.connector.scene == plan.relative or any(
-            c.scene == plan.relative and c.script in STOCK_SCRIPTS for c in m.components):
+        c.scene == plan.relative and c.script in STOCK_SCRIPTS for c in m.components
+    ):
         connector_script = ctx.rossharp.script("RosConnector")
     if m.connector.scene == plan.relative:
         assert connector_script is not None
         where = m.connector.locations.of("gameobject")
-        connector_id = editor.attach(m.connector.gameobject, True, connector_script,
-                                     _connector_fields(m), where, "connector").file_id
+        connector_id = editor.attach(
+            m.connector.gameobject, True, connector_script, _connector_fields(m), where, "connector"
+        ).file_id
     for script in ctx.code.scripts:
         item = script.item
         if item.scene != plan.relative:
             continue
         if connector_id == 0:
-            plan.actions.append(f"note: {script.view.class_name}'s Connector stays empty (the "
-                                "RosConnector is in another scene); it finds one at runtime")
+            plan.actions.append(
+                f"note: {script.view.class_name}'s Connector stays empty (the "
+                "RosConnector is in another scene); it finds one at runtime"
+            )
         fields = [("Connector", ObjectRef(connector_id)), *script.view.serialized_fields()]
-        ref = ScriptRef(script.guid, class_name=script.view.class_name,
-                        namespace=script.view.namespace)
-        editor.attach(item.gameobject, item.create, ref, fields, item.locations.of("gameobject"),
-                      script.source)
+        ref = ScriptRef(
+            script.guid, class_name=script.view.class_name, namespace=script.view.namespace
+        )
+        editor.attach(
+            item.gameobject,
+            item.create,
+            ref,
+            fields,
+            item.locations.of("gameobject"),
+            script.source,
+        )
     for item in m.components:
         if item.scene != plan.relative:
             continue
@@ -209,8 +241,14 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
         editor.gameobject(item.gameobject, item.create, where)
         if item.script in STOCK_SCRIPTS and connector_script is not None:
             # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
-            editor.attach(item.gameobject, item.create, connector_script, _connector_fields(m),
-                          where, f"connector for {item.script}")
+            editor.attach(
+                item.gameobject,
+                item.create,
+                connector_script,
+                _connector_fields(m),
+                where,
+                f"connector for {item.script}",
+            )
         fields = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in item.fields]
         editor.attach(item.gameobject, item.create, ref, fields, where, f"component {item.script}")
     editor.prune(lock.components, editor.wanted)
@@ -219,9 +257,11 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
 def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocument:
     path = manifest.project_root / relative
     if not path.is_file():
-        raise LocatedError.at(where, f"scene {relative} not found in the Unity project "
-                              f"{manifest.project_root}",
-                              hint="scene paths are relative to the project, e.g. Assets/Scenes/Main.unity")
+        raise LocatedError.at(
+            where,
+            f"scene {relative} not found in the Unity project {manifest.project_root}",
+            hint="scene paths are relative to the project, e.g. Assets/Scenes/Main.unity",
+        )
     try:
         return SceneDocument.load(path)
     except UserError as error:
@@ -239,8 +279,13 @@ def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
     return found
 
 
-def plan_scenes(manifest: Manifest, code: CodePlan, rossharp: RosSharp,
-                scripts: dict[str, ScriptInfo], lock: LockFile) -> list[ScenePlan]:
+def plan_scenes(
+    manifest: Manifest,
+    code: CodePlan,
+    rossharp: RosSharp,
+    scripts: dict[str, ScriptInfo],
+    lock: LockFile,
+) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
     ctx = _Context(manifest, code, rossharp, scripts)
     named = _scene_locations(manifest)

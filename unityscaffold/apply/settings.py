@@ -14,8 +14,11 @@ import re
 __all__ = ["DEFINE", "with_ros_define"]
 
 DEFINE = "ROS2"
-_BLOCK = re.compile(r"^(?P<indent>[ ]+)scriptingDefineSymbols:(?P<rest>[^\n]*)\n"
-                    r"(?P<items>(?:(?P=indent)[ ]+[^\n]*\n)*)", re.M)
+_BLOCK = re.compile(
+    r"^(?P<indent>[ ]+)scriptingDefineSymbols:(?P<rest>[^\n]*)\n"
+    r"(?P<items>(?:(?P=indent)[ ]+[^\n]*\n)*)",
+    re.M,
+)
 
 
 def _edit(symbols: str, want: bool) -> str:
@@ -52,5 +55,6 @@ def with_ros_define(text: str, ros2: bool) -> str:
         block = f"{indent}scriptingDefineSymbols: {{}}\n"
     else:
         block = f"{indent}scriptingDefineSymbols:\n" + "".join(
-            f"{indent}  {key}: {value}\n" for key, value in kept)
-    return text[: match.start()] + block + text[match.end():]
+            f"{indent}  {key}: {value}\n" for key, value in kept
+        )
+    return text[: match.start()] + block + text[match.end() :]

@@ -15,9 +15,13 @@ __all__ = ["build_app", "main"]
 # Command name -> the module that defines it. A module is imported only when its command runs
 # (or for the full help), so `scaffold apply` does not pay for discovery's network stack.
 _COMMANDS = {
-    "apply": "apply", "plan": "apply", "init": "apply",
-    "msgs": "msgs", "scene": "scene", "discover": "discover",
-}  # fmt: skip
+    "apply": "apply",
+    "plan": "apply",
+    "init": "apply",
+    "msgs": "msgs",
+    "scene": "scene",
+    "discover": "discover",
+}
 _GROUPS = ("msgs", "scene")
 
 
@@ -95,8 +99,11 @@ def main(argv: list[str] | None = None) -> int:
             return int(Exit.USER_ERROR)
         import traceback
 
-        typer.echo("internal error: unityscaffold hit a bug; please report it with this "
-                   "output:\n" + traceback.format_exc(), err=True)
+        typer.echo(
+            "internal error: unityscaffold hit a bug; please report it with this "
+            "output:\n" + traceback.format_exc(),
+            err=True,
+        )
         return int(Exit.INTERNAL)
     return status if isinstance(status, int) else int(Exit.OK)
 

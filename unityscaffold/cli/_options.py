@@ -11,14 +11,18 @@ from unityscaffold.errors import UserError
 from unityscaffold.interfaces.model import Dialect
 
 RosOption: int | None = typer.Option(
-    None, "--ros", metavar="1|2",
+    None,
+    "--ros",
+    metavar="1|2",
     help="ROS version whose rules apply. Default: $ROS_VERSION when set, else 2.",
-)  # fmt: skip
+)
 PathOption: list[Path] = typer.Option(
-    [], "--path", metavar="DIR",
+    [],
+    "--path",
+    metavar="DIR",
     help="Folder to search for ROS packages before the ROS environment and the built-in "
     "definitions; repeatable.",
-)  # fmt: skip
+)
 JsonOption: bool = typer.Option(False, "--json", help="Print JSON for scripts.")
 
 
@@ -30,8 +34,11 @@ def dialect_of(ros: int | None) -> Dialect:
     if ros not in (1, 2):
         raise UserError(f"--ros must be 1 or 2, not {ros}")
     return Dialect(ros)
+
+
 NoEnvOption: bool = typer.Option(
-    False, "--no-env",
+    False,
+    "--no-env",
     help="Ignore the ROS environment (ROS_PACKAGE_PATH, AMENT_PREFIX_PATH, /opt/ros, /usr/share): "
     "search only --path folders and the built-in standard definitions.",
-)  # fmt: skip
+)

@@ -12,10 +12,12 @@ from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
 from unityscaffold.apply.run import Mode, run
 from unityscaffold.errors import Exit
 
-ManifestArgument: Path = typer.Argument(Path("robot.yaml"), metavar="MANIFEST",
-                                        help="The manifest (default: robot.yaml).")
+ManifestArgument: Path = typer.Argument(
+    Path("robot.yaml"), metavar="MANIFEST", help="The manifest (default: robot.yaml)."
+)
 RosEnvOption: bool = typer.Option(
-    False, "--ros-env",
+    False,
+    "--ros-env",
     help="Also search the ROS environment for interfaces. Off by default so that output "
     "depends only on files in the repository and the built-in standard definitions.",
 )
@@ -44,11 +46,13 @@ def register(app: typer.Typer) -> None:
     @app.command("apply")
     def apply_command(
         manifest: Path = ManifestArgument,
-        check: bool = typer.Option(False, "--check",
-                                   help="Write nothing; exit 1 if the project differs from the manifest."),
+        check: bool = typer.Option(
+            False, "--check", help="Write nothing; exit 1 if the project differs from the manifest."
+        ),
         dry_run: bool = typer.Option(False, "--dry-run", help="Same as `scaffold plan`."),
-        force: bool = typer.Option(False, "--force",
-                                   help="Overwrite generated files even if edited by hand."),
+        force: bool = typer.Option(
+            False, "--force", help="Overwrite generated files even if edited by hand."
+        ),
         quiet: bool = typer.Option(False, "--quiet", "-q", help="Print only errors."),
         ros_env: bool = RosEnvOption,
         as_json: bool = JsonOption,
@@ -80,8 +84,9 @@ def register(app: typer.Typer) -> None:
     def init_command(
         directory: Path = typer.Argument(..., metavar="DIR", help="Folder for the new project."),
         ros: int = typer.Option(2, "--ros", metavar="1|2", help="ROS version of the robot."),
-        force: bool = typer.Option(False, "--force",
-                                   help="Add the template to a non-empty folder (keeps existing files)."),
+        force: bool = typer.Option(
+            False, "--force", help="Add the template to a non-empty folder (keeps existing files)."
+        ),
     ) -> None:
         """Create a template Unity project (2022.3, ROS# pinned) with a starter robot.yaml."""
         if ros not in (1, 2):
@@ -90,5 +95,7 @@ def register(app: typer.Typer) -> None:
             raise UserError(f"--ros must be 1 or 2, not {ros}")
         changes = init_project(directory, ros, force=force)
         created = sum(1 for c in changes if c.writes)
-        typer.echo(f"created {created} files in {directory}; next: scaffold apply "
-                   f"{directory / 'robot.yaml'}")
+        typer.echo(
+            f"created {created} files in {directory}; next: scaffold apply "
+            f"{directory / 'robot.yaml'}"
+        )

@@ -32,37 +32,60 @@ def register(app: typer.Typer) -> None:
 
 def discover_command(
     manifest: Path = typer.Argument(Path("robot.yaml"), help="The manifest to add to."),
-    master: str | None = typer.Option(None, "--master", metavar="URL",
-                                      help="A ROS 1 master, e.g. http://localhost:11311."),
-    rosbridge: str | None = typer.Option(None, "--rosbridge", metavar="URL", help="A "
-                                         "rosbridge (ROS 1 or 2), e.g. ws://localhost:9090."),
-    bag: Path | None = typer.Option(None, "--bag", metavar="FILE",
-                                    help="A ROS 1 .bag, a ROS 2 .db3/.mcap file or bag folder."),
-    select: str | None = typer.Option(None, "--select", metavar="REGEX",
-                                      help="Only names this regular expression matches."),
-    exclude: str | None = typer.Option(None, "--exclude", metavar="REGEX",
-                                       help="Leave out names this regular expression matches."),
-    everything: bool = typer.Option(False, "--all", help="Include ROS plumbing (/rosout, "
-                                    "/rosapi/*, logger and parameter services)."),
-    cache: Path | None = typer.Option(None, "--cache", metavar="DIR", help="Definitions cache "
-                                      "folder (default: ros_definitions next to the manifest)."),
-    print_fragment: bool = typer.Option(False, "--print", help="Print a manifest fragment "
-                                        "instead of editing the manifest."),
+    master: str | None = typer.Option(
+        None, "--master", metavar="URL", help="A ROS 1 master, e.g. http://localhost:11311."
+    ),
+    rosbridge: str | None = typer.Option(
+        None,
+        "--rosbridge",
+        metavar="URL",
+        help="A rosbridge (ROS 1 or 2), e.g. ws://localhost:9090.",
+    ),
+    bag: Path | None = typer.Option(
+        None, "--bag", metavar="FILE", help="A ROS 1 .bag, a ROS 2 .db3/.mcap file or bag folder."
+    ),
+    select: str | None = typer.Option(
+        None, "--select", metavar="REGEX", help="Only names this regular expression matches."
+    ),
+    exclude: str | None = typer.Option(
+        None, "--exclude", metavar="REGEX", help="Leave out names this regular expression matches."
+    ),
+    everything: bool = typer.Option(
+        False,
+        "--all",
+        help="Include ROS plumbing (/rosout, /rosapi/*, logger and parameter services).",
+    ),
+    cache: Path | None = typer.Option(
+        None,
+        "--cache",
+        metavar="DIR",
+        help="Definitions cache folder (default: ros_definitions next to the manifest).",
+    ),
+    print_fragment: bool = typer.Option(
+        False, "--print", help="Print a manifest fragment instead of editing the manifest."
+    ),
     dry_run: bool = typer.Option(False, "--dry-run", help="Discover and verify; write nothing."),
     as_json: bool = typer.Option(False, "--json", help="Print the result as one JSON document."),
-    timeout: float = typer.Option(2.0, "--timeout", min=0.05, metavar="SECONDS",
-                                  help="Time limit of each network step."),
-    progress: bool = typer.Option(False, "--progress", help="Show progress on stderr even when "
-                                  "it is not a terminal."),
+    timeout: float = typer.Option(
+        2.0, "--timeout", min=0.05, metavar="SECONDS", help="Time limit of each network step."
+    ),
+    progress: bool = typer.Option(
+        False, "--progress", help="Show progress on stderr even when it is not a terminal."
+    ),
 ) -> None:
     if sum(s is not None for s in (master, rosbridge, bag)) != 1:
         raise UserError("give exactly one source: --master URL, --rosbridge URL or --bag FILE")
     text = _manifest_text(manifest, required=not print_fragment)
     cache = cache if cache is not None else manifest.parent / "ros_definitions"
     found = live.discover(
-        master_url=master, rosbridge_url=rosbridge, bag=bag, timeout=timeout,
+        master_url=master,
+        rosbridge_url=rosbridge,
+        bag=bag,
+        timeout=timeout,
         names=live.NameFilter.of(select, exclude, include_system=everything),
-        dialect=_manifest_dialect(text), progress=_progress_printer(progress))
+        dialect=_manifest_dialect(text),
+        progress=_progress_printer(progress),
+    )
     entry = Path(os.path.relpath(cache, manifest.parent)).as_posix()
     if print_fragment:
         changes = edit.ManifestEdit(edit.manifest_fragment(found, cache_entry=entry))
@@ -72,8 +95,15 @@ def discover_command(
     base = manifest.parent
     staged = stage_definitions(found, cache, search_paths=edit.interface_folders(text or "", base))
     _finish(staged, manifest, changes, dry_run=dry_run, write_manifest=not print_fragment)
-    _report(found, staged, changes, manifest, print_fragment=print_fragment, as_json=as_json,
-            dry_run=dry_run)
+    _report(
+        found,
+        staged,
+        changes,
+        manifest,
+        print_fragment=print_fragment,
+        as_json=as_json,
+        dry_run=dry_run,
+    )
 
 
 def _manifest_text(manifest: Path, *, required: bool) -> str | None:
@@ -102,11 +132,18 @@ def _progress_printer(forced: bool) -> live.Progress | None:
         typer.echo(f"\rprobing {done}/{total}: {name[:60]:<60}", err=True, nl=False)
         if end:
             typer.echo("", err=True)
+
     return show
 
 
-def _finish(staged: StagedCache, manifest: Path, changes: edit.ManifestEdit, *, dry_run: bool,
-            write_manifest: bool) -> None:
+def _finish(
+    staged: StagedCache,
+    manifest: Path,
+    changes: edit.ManifestEdit,
+    *,
+    dry_run: bool,
+    write_manifest: bool,
+) -> None:
     """Everything was verified: move the cache into place, then write the manifest."""
     if dry_run:
         staged.discard()
@@ -116,19 +153,30 @@ def _finish(staged: StagedCache, manifest: Path, changes: edit.ManifestEdit, *, 
         edit.write_manifest(manifest, changes.text)
 
 
-def _report(found: live.Discovery, staged: StagedCache, changes: edit.ManifestEdit,
-            manifest: Path, *, print_fragment: bool, as_json: bool, dry_run: bool) -> None:
+def _report(
+    found: live.Discovery,
+    staged: StagedCache,
+    changes: edit.ManifestEdit,
+    manifest: Path,
+    *,
+    print_fragment: bool,
+    as_json: bool,
+    dry_run: bool,
+) -> None:
     warnings = [*found.warnings, *staged.warnings]
     for warning in warnings:
         typer.echo(f"warning: {warning}", err=True)
     if as_json:
-        document: dict[str, Any] = {**found.to_json(), "warnings": warnings,
-                                    "cache": str(staged.target),
-                                    "cache_files_changed": [p.as_posix() for p in staged.changed],
-                                    "added_topics": list(changes.added_topics),
-                                    "added_services": list(changes.added_services),
-                                    "already_listed": list(changes.already_listed),
-                                    "written": not dry_run}
+        document: dict[str, Any] = {
+            **found.to_json(),
+            "warnings": warnings,
+            "cache": str(staged.target),
+            "cache_files_changed": [p.as_posix() for p in staged.changed],
+            "added_topics": list(changes.added_topics),
+            "added_services": list(changes.added_services),
+            "already_listed": list(changes.already_listed),
+            "written": not dry_run,
+        }
         if print_fragment:
             document["fragment"] = changes.text
         typer.echo(json.dumps(document, indent=2))
@@ -137,10 +185,14 @@ def _report(found: live.Discovery, staged: StagedCache, changes: edit.ManifestEd
         typer.echo(changes.text, nl=False)
         return
     verb = "would add" if dry_run else "added"
-    typer.echo(f"found {len(found.topics)} topics and {len(found.services)} services in "
-               f"{found.source}; {verb} {len(changes.added_topics)} topics and "
-               f"{len(changes.added_services)} services to {manifest}")
+    typer.echo(
+        f"found {len(found.topics)} topics and {len(found.services)} services in "
+        f"{found.source}; {verb} {len(changes.added_topics)} topics and "
+        f"{len(changes.added_services)} services to {manifest}"
+    )
     if changes.already_listed:
         typer.echo(f"already listed: {', '.join(changes.already_listed)}")
-    typer.echo(f"{len(staged.changed)} definition files {'would change' if dry_run else 'written'}"
-               f" in {staged.target}")
+    typer.echo(
+        f"{len(staged.changed)} definition files {'would change' if dry_run else 'written'}"
+        f" in {staged.target}"
+    )

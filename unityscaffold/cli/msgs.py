@@ -37,7 +37,9 @@ def _indent(text: str, prefix: str = "    ") -> str:
 def list_types(
     package: str | None = typer.Option(None, "--package", "-p", help="Only this package."),
     live: str | None = typer.Option(
-        None, "--live", metavar="URL",
+        None,
+        "--live",
+        metavar="URL",
         help="List the types of the active topics of a running system instead: a ROS 1 master "
         "(http://HOST:11311) or a rosbridge (ws://HOST:9090).",
     ),
@@ -60,8 +62,10 @@ def list_types(
     if package is not None and not files:
         from unityscaffold.errors import UserError
 
-        raise UserError(f"no package '{package}' found",
-                        hint="known packages: " + ", ".join(registry.packages()))
+        raise UserError(
+            f"no package '{package}' found",
+            hint="known packages: " + ", ".join(registry.packages()),
+        )
     problems: list[str] = []
     groups: dict[str, dict[str, Any]] = {}
     for file in files:
@@ -70,9 +74,15 @@ def list_types(
         except LocatedError as error:
             problems.append(error.render())
             continue
-        group = groups.setdefault(file.package, {"package": file.package,
-                                                 "path": str(file.path.parent.parent),
-                                                 "origin": file.origin, "types": []})
+        group = groups.setdefault(
+            file.package,
+            {
+                "package": file.package,
+                "path": str(file.path.parent.parent),
+                "origin": file.origin,
+                "types": [],
+            },
+        )
         group["types"].append({"type": f"{file.package}/{file.name}", "kind": file.kind.value})
     if as_json:
         _print_json(list(groups.values()))
@@ -134,8 +144,9 @@ def _fields_text(data: dict[str, Any]) -> None:
 
 @app.command("show")
 def show(
-    types: list[str] = typer.Argument(..., metavar="TYPE...",
-                                      help="Types such as geometry_msgs/Twist or std_srvs/Trigger."),
+    types: list[str] = typer.Argument(
+        ..., metavar="TYPE...", help="Types such as geometry_msgs/Twist or std_srvs/Trigger."
+    ),
     ros: int | None = RosOption,
     path: list[Path] = PathOption,
     no_env: bool = NoEnvOption,

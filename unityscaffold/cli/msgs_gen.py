@@ -54,13 +54,22 @@ def resolve_roots(registry: Registry, names: list[str], everything: bool) -> lis
 
 def _check_out_dir(out: Path) -> None:
     if out.exists() and not out.is_dir():
-        raise UserError(f"output folder {out} exists and is not a folder",
-                        hint="pass a folder with --out")
+        raise UserError(
+            f"output folder {out} exists and is not a folder", hint="pass a folder with --out"
+        )
 
 
-def run(names: list[str], out: Path, dialect: Dialect, paths: list[Path], include_shipped: bool,
-        namespace: str | None, everything: bool, *, use_environment: bool = True,
-        ) -> tuple[Generation, list[FileChange]]:
+def run(
+    names: list[str],
+    out: Path,
+    dialect: Dialect,
+    paths: list[Path],
+    include_shipped: bool,
+    namespace: str | None,
+    everything: bool,
+    *,
+    use_environment: bool = True,
+) -> tuple[Generation, list[FileChange]]:
     """Generate and write; returns what was generated and each file's change."""
     _check_out_dir(out)
     registry = Registry.load(dialect, paths, use_environment=use_environment)
@@ -80,9 +89,11 @@ def _report(generation: Generation, changes: list[FileChange], out: Path) -> Non
     for skipped in generation.skipped:
         typer.echo(f"{'skip':9} {skipped.path} ({skipped.ros_type}): {skipped.reason}")
     counts = {a: sum(1 for c in changes if c.action is a) for a in Action}
-    typer.echo(f"{len(generation.files)} classes generated, {len(generation.skipped)} skipped; "
-               f"files: {counts[Action.CREATE]} created, {counts[Action.UPDATE]} updated, "
-               f"{counts[Action.UNCHANGED]} unchanged, {counts[Action.SKIP]} kept")
+    typer.echo(
+        f"{len(generation.files)} classes generated, {len(generation.skipped)} skipped; "
+        f"files: {counts[Action.CREATE]} created, {counts[Action.UPDATE]} updated, "
+        f"{counts[Action.UNCHANGED]} unchanged, {counts[Action.SKIP]} kept"
+    )
 
 
 def register(app: typer.Typer) -> None:
@@ -90,21 +101,34 @@ def register(app: typer.Typer) -> None:
 
     @app.command("gen")
     def gen(
-        names: list[str] = typer.Argument(None, metavar="TYPE_OR_PACKAGE...",
-                                          help="Types (pkg/Type, pkg/msg/Type) or packages."),
-        out: Path = typer.Option(..., "--out", "-o", help="Output folder, e.g. "
-                                 "Assets/RosMessages."),
+        names: list[str] = typer.Argument(
+            None, metavar="TYPE_OR_PACKAGE...", help="Types (pkg/Type, pkg/msg/Type) or packages."
+        ),
+        out: Path = typer.Option(
+            ..., "--out", "-o", help="Output folder, e.g. Assets/RosMessages."
+        ),
         ros: int | None = RosOption,
         paths: list[Path] = PathOption,
         no_env: bool = NoEnvOption,
-        include_shipped: bool = typer.Option(False, "--include-shipped",
-                                             help="Also generate types ROS# already ships."),
-        namespace: str = typer.Option(None, "--namespace", help="Root namespace instead of "
-                                      "RosSharp.RosBridgeClient.MessageTypes (generates all)."),
+        include_shipped: bool = typer.Option(
+            False, "--include-shipped", help="Also generate types ROS# already ships."
+        ),
+        namespace: str = typer.Option(
+            None,
+            "--namespace",
+            help="Root namespace instead of RosSharp.RosBridgeClient.MessageTypes (generates all).",
+        ),
         everything: bool = typer.Option(False, "--all", help="Generate every type found."),
     ) -> None:
         """Generate ROS# C# classes for types and everything they use."""
-        generation, changes = run(list(names or []), out, dialect_of(ros), list(paths),
-                                  include_shipped, namespace, everything,
-                                  use_environment=not no_env)
+        generation, changes = run(
+            list(names or []),
+            out,
+            dialect_of(ros),
+            list(paths),
+            include_shipped,
+            namespace,
+            everything,
+            use_environment=not no_env,
+        )
         _report(generation, changes, out)

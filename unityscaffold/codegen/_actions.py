@@ -49,20 +49,37 @@ _Wrapper = tuple[str, str, tuple[tuple[str, str], ...]]
 _WRAPPERS: dict[Dialect, dict[str, _Wrapper]] = {
     Dialect.ROS1: {
         "action_goal": ("ActionGoal", "goal", (("header", "header"), ("goal_id", "goal_id"))),
-        "action_result": ("ActionResult", "result",
-                          (("header", "header"), ("goal_status", "status"))),
-        "action_feedback": ("ActionFeedback", "feedback",
-                            (("header", "header"), ("goal_status", "status"))),
+        "action_result": (
+            "ActionResult",
+            "result",
+            (("header", "header"), ("goal_status", "status")),
+        ),
+        "action_feedback": (
+            "ActionFeedback",
+            "feedback",
+            (("header", "header"), ("goal_status", "status")),
+        ),
     },
     Dialect.ROS2: {
         "action_goal": ("ActionGoal", "args", (("header", "header"), ("goal_info", "goalInfo"))),
-        "action_result": ("ActionResult", "values", (
-            ("header", "header"), ("string", "action"), ("sbyte", "status"), ("bool", "result"),
-            ("string", "id"))),
-        "action_feedback": ("ActionFeedback", "values", (
-            ("header", "header"), ("string", "action"), ("string", "id"))),
+        "action_result": (
+            "ActionResult",
+            "values",
+            (
+                ("header", "header"),
+                ("string", "action"),
+                ("sbyte", "status"),
+                ("bool", "result"),
+                ("string", "id"),
+            ),
+        ),
+        "action_feedback": (
+            "ActionFeedback",
+            "values",
+            (("header", "header"), ("string", "action"), ("string", "id")),
+        ),
     },
-}  # fmt: skip
+}
 _PAYLOAD_ROLE = {"action_goal": "goal", "action_result": "result", "action_feedback": "feedback"}
 
 
@@ -70,17 +87,32 @@ def _base(ctx: FileContext, name: str) -> str:
     return (_RUNTIME if ctx.qualify_runtime else "") + name
 
 
-def build_wrapper(ctx: FileContext, classes: ActionClasses, role: str, runtime: RuntimeTypes,
-                  ros_name: str, source: str, identity: str) -> ActionWrapperView:
+def build_wrapper(
+    ctx: FileContext,
+    classes: ActionClasses,
+    role: str,
+    runtime: RuntimeTypes,
+    ros_name: str,
+    source: str,
+    identity: str,
+) -> ActionWrapperView:
     cls: CsClass = getattr(classes, role)
     payload_cls: CsClass = getattr(classes, _PAYLOAD_ROLE[role])
     base, payload, params = _WRAPPERS[ctx.dialect][role]
-    runtime_classes: dict[str, CsClass] = {key: getattr(runtime, key) for key, _ in params
-                                           if hasattr(runtime, key)}
+    runtime_classes: dict[str, CsClass] = {
+        key: getattr(runtime, key) for key, _ in params if hasattr(runtime, key)
+    }
     wanted = [(payload_cls, False), *((c, ctx.qualify_runtime) for c in runtime_classes.values())]
     refs = References(cls.namespace, ctx.known, wanted)
-    typed = [(refs.name(runtime_classes[key], qualified=ctx.qualify_runtime)
-              if key in runtime_classes else key, name) for key, name in params]
+    typed = [
+        (
+            refs.name(runtime_classes[key], qualified=ctx.qualify_runtime)
+            if key in runtime_classes
+            else key,
+            name,
+        )
+        for key, name in params
+    ]
     payload_type = refs.name(payload_cls)
     parameters = [*(f"{t} {n}" for t, n in typed), f"{payload_type} {payload}"]
     return ActionWrapperView(
@@ -97,11 +129,18 @@ def build_wrapper(ctx: FileContext, classes: ActionClasses, role: str, runtime: 
     )
 
 
-def build_action(ctx: FileContext, classes: ActionClasses, ros_name: str, source: str,
-                 identity: str) -> ActionView:
+def build_action(
+    ctx: FileContext, classes: ActionClasses, ros_name: str, source: str, identity: str
+) -> ActionView:
     cls = classes.action
-    order = (classes.action_goal, classes.action_result, classes.action_feedback,
-             classes.goal, classes.result, classes.feedback)
+    order = (
+        classes.action_goal,
+        classes.action_result,
+        classes.action_feedback,
+        classes.goal,
+        classes.result,
+        classes.feedback,
+    )
     refs = References(cls.namespace, ctx.known, [(c, False) for c in order])
     names = [refs.name(c) for c in order]
     parts = tuple(zip(names[:3], ("action_goal", "action_result", "action_feedback"), strict=False))

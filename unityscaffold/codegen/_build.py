@@ -45,8 +45,9 @@ def _where(spec: MessageSpec, field: Field | None = None) -> SourceLocation:
     return SourceLocation(spec.source or spec.full_name)
 
 
-def _element_class(ctx: FileContext, ref: TypeRef, spec: MessageSpec,
-                   field: Field) -> CsClass | None:
+def _element_class(
+    ctx: FileContext, ref: TypeRef, spec: MessageSpec, field: Field
+) -> CsClass | None:
     if ref.is_message:
         return ctx.class_of(ref.base, _where(spec, field))
     if ctx.dialect is Dialect.ROS1 and ref.base in ROS1_TIME_TYPES:
@@ -93,8 +94,11 @@ def _member(ctx: FileContext, refs: References, spec: MessageSpec, field: Field)
     ref = field.type
     primitive = primitive_type(ref.base, ctx.dialect)
     cls = _element_class(ctx, ref, spec, field)
-    element = primitive if cls is None else refs.name(cls, qualified=ctx.qualify_runtime
-                                                        and ref.base in ROS1_TIME_TYPES)
+    element = (
+        primitive
+        if cls is None
+        else refs.name(cls, qualified=ctx.qualify_runtime and ref.base in ROS1_TIME_TYPES)
+    )
     assert element is not None
     cs_type = element + ("[]" if ref.is_array else "")
     name = escape_identifier(field.name)
@@ -110,8 +114,10 @@ def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> Consta
     cs_type = primitive_type(constant.type, ctx.dialect)
     where = constant.location or _where(spec)
     if cs_type is None:
-        raise LocatedError.at(where, f"constant '{constant.name}' has type {constant.type}, "
-                              "which C# constants cannot have")
+        raise LocatedError.at(
+            where,
+            f"constant '{constant.name}' has type {constant.type}, which C# constants cannot have",
+        )
     try:
         value = literals.literal(constant.value, cs_type)
     except ValueError as exc:
@@ -130,9 +136,12 @@ def _check_names(spec: MessageSpec, class_name: str) -> None:
         except UserError as exc:
             raise LocatedError.at(where, exc.message, hint=exc.hint) from None
         if item.name in seen:
-            raise LocatedError.at(where, f"'{item.name}' has the same C# name as {seen[item.name]} "
-                                  f"of class {class_name}", hint="C# allows one member per name, "
-                                  "and none named like its class; rename the field")
+            raise LocatedError.at(
+                where,
+                f"'{item.name}' has the same C# name as {seen[item.name]} of class {class_name}",
+                hint="C# allows one member per name, "
+                "and none named like its class; rename the field",
+            )
         seen[item.name] = f"member '{item.name}'"
 
 
@@ -145,8 +154,9 @@ def message_references(ctx: FileContext, spec: MessageSpec) -> list[tuple[CsClas
     return wanted
 
 
-def build_message(ctx: FileContext, spec: MessageSpec, cls: CsClass, ros_name: str, source: str,
-                  identity: str) -> MessageView:
+def build_message(
+    ctx: FileContext, spec: MessageSpec, cls: CsClass, ros_name: str, source: str, identity: str
+) -> MessageView:
     """The view of a message (or service half) ``spec`` as class ``cls``."""
     _check_names(spec, cls.name)
     refs = References(cls.namespace, ctx.known, message_references(ctx, spec))

@@ -62,16 +62,19 @@ class References:
     using, unless its simple name is ambiguous there, or ``qualified`` asks for ``global::``.
     """
 
-    def __init__(self, namespace: str, known: KnownClasses,
-                 wanted: Iterable[tuple[CsClass, bool]]) -> None:
+    def __init__(
+        self, namespace: str, known: KnownClasses, wanted: Iterable[tuple[CsClass, bool]]
+    ) -> None:
         self.namespace = namespace
         wanted = sorted(set(wanted))
         imported = {c.namespace for c, q in wanted if not q and not self._visible(c)}
         self._names: dict[tuple[CsClass, bool], str] = {}
         usings: set[str] = set()
         for cls, qualified in wanted:
-            clash = any(known.defines(other, cls.name)
-                        for other in ({namespace} | imported) - {cls.namespace})
+            clash = any(
+                known.defines(other, cls.name)
+                for other in ({namespace} | imported) - {cls.namespace}
+            )
             if qualified or (clash and cls.namespace != namespace):
                 self._names[(cls, qualified)] = cls.qualified
             else:

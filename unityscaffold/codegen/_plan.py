@@ -27,11 +27,24 @@ from unityscaffold.interfaces.registry import Registry
 
 __all__ = ["Plan", "PlannedClass", "make_plan", "source_name", "unit_key"]
 
-_ACTION_ROLES = ("goal", "result", "feedback", "action_goal", "action_result", "action_feedback",
-                 "action")  # fmt: skip
-_ROLE_SUFFIX = {"goal": "Goal", "result": "Result", "feedback": "Feedback",
-                "action_goal": "ActionGoal", "action_result": "ActionResult",
-                "action_feedback": "ActionFeedback", "action": "Action"}  # fmt: skip
+_ACTION_ROLES = (
+    "goal",
+    "result",
+    "feedback",
+    "action_goal",
+    "action_result",
+    "action_feedback",
+    "action",
+)
+_ROLE_SUFFIX = {
+    "goal": "Goal",
+    "result": "Result",
+    "feedback": "Feedback",
+    "action_goal": "ActionGoal",
+    "action_result": "ActionResult",
+    "action_feedback": "ActionFeedback",
+    "action": "Action",
+}
 _WRAPPER_DEPENDENCIES = {
     Dialect.ROS1: ("std_msgs/Header", "actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"),
     Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus"),
@@ -96,9 +109,12 @@ def _units(registry: Registry, roots: list[Interface], extra: tuple[str, ...]) -
                 continue
             if message.full_name not in _owned_names(owner) and message.owner is not None:
                 where = SourceLocation(message.source or message.full_name)
-                raise LocatedError.at(where, f"{message.full_name} is used as a field type, but "
-                                      "ROS# has no class for it", hint="use the service's or "
-                                      "action's own request, response, goal, result or feedback")
+                raise LocatedError.at(
+                    where,
+                    f"{message.full_name} is used as a field type, but ROS# has no class for it",
+                    hint="use the service's or "
+                    "action's own request, response, goal, result or feedback",
+                )
             if unit_key(owner) not in units:
                 units[unit_key(owner)] = owner
                 added = True
@@ -111,8 +127,22 @@ def unit_key(interface: Interface) -> str:
     return f"{interface.package}/{interface.kind.value}/{interface.name}"
 
 
-_ROS1_SUFFIXES = (("srv", "Request"), ("srv", "Response"), *(("action", s) for s in (
-    "ActionGoal", "ActionResult", "ActionFeedback", "Action", "Goal", "Result", "Feedback")))
+_ROS1_SUFFIXES = (
+    ("srv", "Request"),
+    ("srv", "Response"),
+    *(
+        ("action", s)
+        for s in (
+            "ActionGoal",
+            "ActionResult",
+            "ActionFeedback",
+            "Action",
+            "Goal",
+            "Result",
+            "Feedback",
+        )
+    ),
+)
 
 
 def _ros1_generated_owner(registry: Registry, message: MessageSpec) -> Interface | None:
@@ -140,8 +170,9 @@ def _owner(registry: Registry, part: MessageSpec) -> Interface | None:
 class Plan:
     """Every class of one generation, named, placed, and marked generated or skipped."""
 
-    def __init__(self, dialect: Dialect, root: str, custom_namespace: bool,
-                 items: list[PlannedClass]) -> None:
+    def __init__(
+        self, dialect: Dialect, root: str, custom_namespace: bool, items: list[PlannedClass]
+    ) -> None:
         self.dialect = dialect
         self.root = root
         self.custom_namespace = custom_namespace
@@ -164,12 +195,15 @@ class Plan:
                     role = _role_of_derived(item.interface, derived)
                     self.by_ros[derived.full_name] = self._roles[unit_key(item.interface)][role]
         if dialect is Dialect.ROS1:
-            self.runtime = RuntimeTypes(rossharp_class("Std", "Header"),
-                                        goal_id=rossharp_class("Actionlib", "GoalID"),
-                                        goal_status=rossharp_class("Actionlib", "GoalStatus"))
+            self.runtime = RuntimeTypes(
+                rossharp_class("Std", "Header"),
+                goal_id=rossharp_class("Actionlib", "GoalID"),
+                goal_status=rossharp_class("Actionlib", "GoalStatus"),
+            )
         else:
-            self.runtime = RuntimeTypes(rossharp_class("Std", "Header"),
-                                        goal_info=rossharp_class("Action", "GoalInfo"))
+            self.runtime = RuntimeTypes(
+                rossharp_class("Std", "Header"), goal_info=rossharp_class("Action", "GoalInfo")
+            )
 
     @property
     def generated(self) -> list[PlannedClass]:
@@ -183,8 +217,9 @@ class Plan:
         try:
             return self.by_ros[full_name]
         except KeyError:
-            raise LocatedError.at(used_at or SourceLocation(full_name),
-                                  f"no C# class for {full_name}") from None
+            raise LocatedError.at(
+                used_at or SourceLocation(full_name), f"no C# class for {full_name}"
+            ) from None
 
     def action_classes(self, interface: Interface) -> ActionClasses:
         roles = self._roles[unit_key(interface)]
@@ -208,7 +243,7 @@ class Plan:
 
 
 def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> str:
-    suffix = derived.name[len(action.name):]
+    suffix = derived.name[len(action.name) :]
     return {v: k for k, v in _ROLE_SUFFIX.items()}[suffix]
 
 
@@ -216,29 +251,53 @@ def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
     segment = namespace_segment(unit.package)
     namespace = f"{root}.{segment}"
 
-    def planned(role: str, spec: MessageSpec | None, name: str, ros_name: str, folder: str,
-                identity: Interface) -> PlannedClass:
-        return PlannedClass(unit, role, spec, CsClass(namespace, name), ros_name,
-                            f"{segment}/{folder}/{name}.cs", identity)
+    def planned(
+        role: str,
+        spec: MessageSpec | None,
+        name: str,
+        ros_name: str,
+        folder: str,
+        identity: Interface,
+    ) -> PlannedClass:
+        return PlannedClass(
+            unit,
+            role,
+            spec,
+            CsClass(namespace, name),
+            ros_name,
+            f"{segment}/{folder}/{name}.cs",
+            identity,
+        )
 
     if isinstance(unit, MessageSpec):
         return [planned("message", unit, class_name(unit.name), unit.full_name, "msg", unit)]
     base = class_name(unit.name)
     if isinstance(unit, ServiceSpec):
-        return [planned("request", unit.request, base + "Request", unit.full_name, "srv",
-                        unit.request),
-                planned("response", unit.response, base + "Response", unit.full_name, "srv",
-                        unit.response)]
+        return [
+            planned("request", unit.request, base + "Request", unit.full_name, "srv", unit.request),
+            planned(
+                "response", unit.response, base + "Response", unit.full_name, "srv", unit.response
+            ),
+        ]
     prefix = f"{unit.package}/" if unit.dialect is Dialect.ROS1 else f"{unit.package}/action/"
     parts = {"goal": unit.goal, "result": unit.result, "feedback": unit.feedback}
-    derived = {d.name[len(unit.name):]: d for d in unit.derived}
+    derived = {d.name[len(unit.name) :]: d for d in unit.derived}
     items = []
     for role in _ACTION_ROLES:
         suffix = _ROLE_SUFFIX[role]
-        identity: Interface = parts.get(role) or (derived.get(suffix) or unit
-                                                  if unit.dialect is Dialect.ROS1 else unit)
-        items.append(planned(role, parts.get(role), base + suffix, f"{prefix}{unit.name}{suffix}",
-                             "action", identity))
+        identity: Interface = parts.get(role) or (
+            derived.get(suffix) or unit if unit.dialect is Dialect.ROS1 else unit
+        )
+        items.append(
+            planned(
+                role,
+                parts.get(role),
+                base + suffix,
+                f"{prefix}{unit.name}{suffix}",
+                "action",
+                identity,
+            )
+        )
     return items
 
 
@@ -252,9 +311,11 @@ def _skip_reason(item: PlannedClass, dialect: Dialect, include_shipped: bool) ->
     if shipped is None:
         return None
     if shipped != item.ros_message_name:
-        raise UserError(f"{item.interface.full_name} would become {item.cs_class.full_name}, "
-                        f"a class ROS# already ships for {shipped}",
-                        hint="generate into another root namespace with --namespace")
+        raise UserError(
+            f"{item.interface.full_name} would become {item.cs_class.full_name}, "
+            f"a class ROS# already ships for {shipped}",
+            hint="generate into another root namespace with --namespace",
+        )
     return f"ROS# ships {item.cs_class.full_name}"
 
 
@@ -264,14 +325,20 @@ def _check_unique(items: list[PlannedClass]) -> None:
         other = seen.setdefault(item.cs_class, item)
         if other is not item:
             both = f"{other.interface.full_name} and {item.interface.full_name}"
-            raise UserError(f"{both} would both "
-                            f"become C# class {item.cs_class.full_name}",
-                            hint="ROS# names classes by package namespace and type name; rename "
-                            "one type, or generate them separately with --namespace")
+            raise UserError(
+                f"{both} would both become C# class {item.cs_class.full_name}",
+                hint="ROS# names classes by package namespace and type name; rename "
+                "one type, or generate them separately with --namespace",
+            )
 
 
-def make_plan(registry: Registry, roots: list[Interface], dialect: Dialect, include_shipped: bool,
-              namespace: str | None) -> Plan:
+def make_plan(
+    registry: Registry,
+    roots: list[Interface],
+    dialect: Dialect,
+    include_shipped: bool,
+    namespace: str | None,
+) -> Plan:
     if namespace is not None:
         validate_namespace(namespace)
     extra = _WRAPPER_DEPENDENCIES[dialect] if namespace is None else ()
@@ -280,7 +347,17 @@ def make_plan(registry: Registry, roots: list[Interface], dialect: Dialect, incl
         items += _classes_of(unit, namespace or ROSSHARP_ROOT_NAMESPACE)
     _check_unique(items)
     if namespace is None:
-        items = [PlannedClass(i.interface, i.role, i.spec, i.cs_class, i.ros_message_name, i.path,
-                              i.identity_of, _skip_reason(i, dialect, include_shipped))
-                 for i in items]
+        items = [
+            PlannedClass(
+                i.interface,
+                i.role,
+                i.spec,
+                i.cs_class,
+                i.ros_message_name,
+                i.path,
+                i.identity_of,
+                _skip_reason(i, dialect, include_shipped),
+            )
+            for i in items
+        ]
     return Plan(dialect, namespace or ROSSHARP_ROOT_NAMESPACE, namespace is not None, items)

@@ -87,29 +87,48 @@ def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> 
     source = _plan.source_name(item.interface)
     if item.role in ("message", "request", "response", "goal", "result", "feedback"):
         assert item.spec is not None
-        return build_message(ctx, item.spec, item.cs_class, item.ros_message_name, source,
-                             ids.label(item.identity_of))
+        return build_message(
+            ctx,
+            item.spec,
+            item.cs_class,
+            item.ros_message_name,
+            source,
+            ids.label(item.identity_of),
+        )
     classes = plan.action_classes(item.interface)
     if item.role == "action":
         identity = ids.label(item.identity_of)
         return build_action(ctx, classes, item.ros_message_name, source, identity)
-    return build_wrapper(ctx, classes, item.role, plan.runtime, item.ros_message_name, source,
-                         ids.label(item.identity_of))
+    return build_wrapper(
+        ctx,
+        classes,
+        item.role,
+        plan.runtime,
+        item.ros_message_name,
+        source,
+        ids.label(item.identity_of),
+    )
 
 
 def generate(registry: Registry, roots: Iterable[Interface], options: Options) -> Generation:
     """C# for ``roots`` and every type they use; raises ``UserError`` on bad input."""
-    plan = _plan.make_plan(registry, list(roots), options.dialect, options.include_shipped,
-                           options.namespace)
+    plan = _plan.make_plan(
+        registry, list(roots), options.dialect, options.include_shipped, options.namespace
+    )
     ctx = plan.file_context()
     ids = Identities(registry, options.dialect)
     files: list[GeneratedFile] = []
     for item in plan.generated:
         text = _render(_view(plan, ctx, ids, item))
-        files.append(GeneratedFile(item.path, text, item.interface.full_name, item.role,
-                                   item.cs_class))
-    skipped = [SkippedClass(i.path, i.interface.full_name, i.role, i.cs_class, i.skip_reason or "")
-               for i in plan.skipped]
-    return Generation(tuple(sorted(files, key=lambda f: f.path)),
-                      tuple(sorted(skipped, key=lambda s: s.path)), plan.class_map())
-
+        files.append(
+            GeneratedFile(item.path, text, item.interface.full_name, item.role, item.cs_class)
+        )
+    skipped = [
+        SkippedClass(i.path, i.interface.full_name, i.role, i.cs_class, i.skip_reason or "")
+        for i in plan.skipped
+    ]
+    return Generation(
+        tuple(sorted(files, key=lambda f: f.path)),
+        tuple(sorted(skipped, key=lambda s: s.path)),
+        plan.class_map(),
+    )

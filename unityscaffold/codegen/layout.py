@@ -38,14 +38,25 @@ def output_files(generation: Generation, out_dir: Path) -> list[DesiredFile]:
         path = out_dir / file.path
         asset = path.relative_to(base).as_posix()
         desired.append(DesiredFile(path, file.text.encode("utf-8")))
-        desired.append(DesiredFile(path.with_name(path.name + ".meta"),
-                                   monoscript_meta(guid_for(salt, asset)).encode(), True))
-        folders.update(p for p in path.parents
-                       if out_dir in p.parents or (in_project and p == out_dir))
+        desired.append(
+            DesiredFile(
+                path.with_name(path.name + ".meta"),
+                monoscript_meta(guid_for(salt, asset)).encode(),
+                True,
+            )
+        )
+        folders.update(
+            p for p in path.parents if out_dir in p.parents or (in_project and p == out_dir)
+        )
     for folder in sorted(folders):
         relative = folder.relative_to(base)
         if len(relative.parts) <= 1 and relative.as_posix() in _ROOT_FOLDERS | {"."}:
             continue
-        desired.append(DesiredFile(folder.with_name(folder.name + ".meta"),
-                                   folder_meta(guid_for(salt, relative.as_posix())).encode(), True))
+        desired.append(
+            DesiredFile(
+                folder.with_name(folder.name + ".meta"),
+                folder_meta(guid_for(salt, relative.as_posix())).encode(),
+                True,
+            )
+        )
     return sorted(desired, key=lambda d: d.path)

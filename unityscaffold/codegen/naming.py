@@ -22,19 +22,23 @@ __all__ = [
 
 ROSSHARP_ROOT_NAMESPACE = "RosSharp.RosBridgeClient.MessageTypes"
 
-_RESERVED = frozenset("""
+_RESERVED = frozenset(
+    """
 abstract as base bool break byte case catch char checked class const continue decimal default
 delegate do double else enum event explicit extern false finally fixed float for foreach goto if
 implicit in int interface internal is lock long namespace new null object operator out override
 params private protected public readonly ref return sbyte sealed short sizeof stackalloc static
 string struct switch this throw true try typeof uint ulong unchecked unsafe ushort using virtual
 void volatile while
-""".split())  # noqa: SIM905
-_CONTEXTUAL = frozenset("""
+""".split()
+)  # noqa: SIM905
+_CONTEXTUAL = frozenset(
+    """
 add alias and ascending args async await by descending dynamic equals file from get global group
 init into join let managed nameof nint not notnull nuint on or orderby partial record remove
 required scoped select set unmanaged value var when where with yield
-""".split())  # noqa: SIM905
+""".split()
+)  # noqa: SIM905
 CSHARP_KEYWORDS: frozenset[str] = _RESERVED | _CONTEXTUAL
 """Reserved and contextual C# keywords; a ROS name on this list gets an ``@`` prefix."""
 
@@ -50,8 +54,10 @@ def is_identifier(name: str) -> bool:
 def escape_identifier(name: str) -> str:
     """``name`` as a C# identifier: keywords get ``@`` (the JSON name stays ``name``)."""
     if not is_identifier(name):
-        raise UserError(f"'{name}' cannot become a C# identifier",
-                        hint="C# names use letters, digits and '_' and do not start with a digit")
+        raise UserError(
+            f"'{name}' cannot become a C# identifier",
+            hint="C# names use letters, digits and '_' and do not start with a digit",
+        )
     return f"@{name}" if name in CSHARP_KEYWORDS else name
 
 
@@ -74,8 +80,10 @@ def namespace_segment(package: str) -> str:
     else:
         segment = package[:1].upper() + package[1:]
     if not is_identifier(segment) or segment in CSHARP_KEYWORDS:
-        raise UserError(f"package '{package}' cannot become a C# namespace (got '{segment}')",
-                        hint="use --namespace, or a package name that starts with a letter")
+        raise UserError(
+            f"package '{package}' cannot become a C# namespace (got '{segment}')",
+            hint="use --namespace, or a package name that starts with a letter",
+        )
     return segment
 
 
@@ -92,6 +100,8 @@ def validate_namespace(namespace: str) -> str:
     parts = namespace.split(".")
     bad = [p for p in parts if not is_identifier(p) or p in _RESERVED]
     if bad:
-        raise UserError(f"'{namespace}' is not a C# namespace name",
-                        hint="use dot-separated identifiers such as MyRobot.Messages")
+        raise UserError(
+            f"'{namespace}' is not a C# namespace name",
+            hint="use dot-separated identifiers such as MyRobot.Messages",
+        )
     return namespace

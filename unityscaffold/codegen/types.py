@@ -14,10 +14,20 @@ from unityscaffold.interfaces.model import Dialect
 __all__ = ["ROS1_TIME_TYPES", "primitive_type"]
 
 _COMMON = {
-    "bool": "bool", "int8": "sbyte", "uint8": "byte", "int16": "short", "uint16": "ushort",
-    "int32": "int", "uint32": "uint", "int64": "long", "uint64": "ulong", "float32": "float",
-    "float64": "double", "string": "string", "char": "byte",
-}  # fmt: skip
+    "bool": "bool",
+    "int8": "sbyte",
+    "uint8": "byte",
+    "int16": "short",
+    "uint16": "ushort",
+    "int32": "int",
+    "uint32": "uint",
+    "int64": "long",
+    "uint64": "ulong",
+    "float32": "float",
+    "float64": "double",
+    "string": "string",
+    "char": "byte",
+}
 _PRIMITIVES = {
     Dialect.ROS1: {**_COMMON, "byte": "sbyte"},
     Dialect.ROS2: {**_COMMON, "byte": "byte", "wstring": "string"},

@@ -64,8 +64,12 @@ class Describer:
             return self.ros1.full_text(message)
         parts = [message.text.rstrip("\n"), "\n"]
         for dependency in self.ros1.dependencies(message):
-            parts += [_SEPARATOR, f"MSG: {dependency.short_full_name}\n",
-                      dependency.text.rstrip("\n"), "\n"]
+            parts += [
+                _SEPARATOR,
+                f"MSG: {dependency.short_full_name}\n",
+                dependency.text.rstrip("\n"),
+                "\n",
+            ]
         return "".join(parts)[:-1]
 
     def identity(self, interface: Interface) -> dict[str, Any]:

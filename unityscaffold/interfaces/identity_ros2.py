@@ -28,14 +28,30 @@ from unityscaffold.interfaces.registry import Registry
 __all__ = ["Ros2Identity"]
 
 _TYPE_IDS = {
-    "int8": 2, "uint8": 3, "int16": 4, "uint16": 5, "int32": 6, "uint32": 7, "int64": 8,
-    "uint64": 9, "float32": 10, "float64": 11, "char": 3, "bool": 15, "byte": 16,
-    "string": 17, "wstring": 18,
-}  # fmt: skip
+    "int8": 2,
+    "uint8": 3,
+    "int16": 4,
+    "uint16": 5,
+    "int32": 6,
+    "uint32": 7,
+    "int64": 8,
+    "uint64": 9,
+    "float32": 10,
+    "float64": 11,
+    "char": 3,
+    "bool": 15,
+    "byte": 16,
+    "string": 17,
+    "wstring": 18,
+}
 _NESTED = 1
 _BOUNDED_STRING_OFFSET = 4  # string 17 -> bounded string 21, wstring 18 -> 22
-_ARRAY_OFFSETS = {ArrayKind.NONE: 0, ArrayKind.FIXED: 48, ArrayKind.BOUNDED: 96,
-                  ArrayKind.UNBOUNDED: 144}  # fmt: skip
+_ARRAY_OFFSETS = {
+    ArrayKind.NONE: 0,
+    ArrayKind.FIXED: 48,
+    ArrayKind.BOUNDED: 96,
+    ArrayKind.UNBOUNDED: 144,
+}
 _EMPTY_PLACEHOLDER = Field(TypeRef("uint8"), "structure_needs_at_least_one_member")
 
 _Description = dict[str, Any]
@@ -59,7 +75,9 @@ def _field_type(ref: TypeRef) -> dict[str, Any]:
 def _describe(name: str, fields: tuple[Field, ...]) -> _Description:
     return {
         "type_name": name,
-        "fields": [{"name": f.name, "type": _field_type(f.type)} for f in fields or (_EMPTY_PLACEHOLDER,)],
+        "fields": [
+            {"name": f.name, "type": _field_type(f.type)} for f in fields or (_EMPTY_PLACEHOLDER,)
+        ],
     }
 
 
@@ -79,13 +97,20 @@ class Ros2Identity:
             return interface.fields
         if isinstance(interface, ServiceSpec):
             assert interface.event is not None
-            parts = (("request_message", interface.request), ("response_message", interface.response),
-                     ("event_message", interface.event))
+            parts = (
+                ("request_message", interface.request),
+                ("response_message", interface.response),
+                ("event_message", interface.event),
+            )
             return tuple(Field(TypeRef(p.full_name), n) for n, p in parts)
-        parts = (("goal", interface.goal), ("result", interface.result), ("feedback", interface.feedback),
-                 ("send_goal_service", interface.services[0]),
-                 ("get_result_service", interface.services[1]),
-                 ("feedback_message", interface.derived[0]))  # fmt: skip
+        parts = (
+            ("goal", interface.goal),
+            ("result", interface.result),
+            ("feedback", interface.feedback),
+            ("send_goal_service", interface.services[0]),
+            ("get_result_service", interface.services[1]),
+            ("feedback_message", interface.derived[0]),
+        )
         return tuple(Field(TypeRef(p.full_name), n) for n, p in parts)
 
     def _local_types(self, interface: Interface) -> dict[str, Interface]:

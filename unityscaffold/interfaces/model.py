@@ -58,14 +58,39 @@ class ArrayKind(enum.Enum):
 
 
 ROS1_PRIMITIVES: tuple[str, ...] = (
-    "bool", "int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64",
-    "float32", "float64", "string", "byte", "char",
-)  # fmt: skip
+    "bool",
+    "int8",
+    "uint8",
+    "int16",
+    "uint16",
+    "int32",
+    "uint32",
+    "int64",
+    "uint64",
+    "float32",
+    "float64",
+    "string",
+    "byte",
+    "char",
+)
 ROS1_BUILTINS: tuple[str, ...] = (*ROS1_PRIMITIVES, "time", "duration")
 ROS2_PRIMITIVES: tuple[str, ...] = (
-    "bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16",
-    "int32", "uint32", "int64", "uint64", "string", "wstring",
-)  # fmt: skip
+    "bool",
+    "byte",
+    "char",
+    "float32",
+    "float64",
+    "int8",
+    "uint8",
+    "int16",
+    "uint16",
+    "int32",
+    "uint32",
+    "int64",
+    "uint64",
+    "string",
+    "wstring",
+)
 
 Scalar = Union[bool, int, float, str]
 Value = Union[Scalar, tuple[Scalar, ...]]

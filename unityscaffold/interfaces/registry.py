@@ -27,19 +27,29 @@ from unityscaffold.interfaces.sources import InterfaceFile, SearchRoot, discover
 __all__ = ["Registry", "TypeNotFound"]
 
 _PARSERS = {
-    Dialect.ROS1: {InterfaceKind.MSG: ros1.parse_message, InterfaceKind.SRV: ros1.parse_service,
-                   InterfaceKind.ACTION: ros1.parse_action},
-    Dialect.ROS2: {InterfaceKind.MSG: ros2.parse_message, InterfaceKind.SRV: ros2.parse_service,
-                   InterfaceKind.ACTION: ros2.parse_action},
-}  # fmt: skip
+    Dialect.ROS1: {
+        InterfaceKind.MSG: ros1.parse_message,
+        InterfaceKind.SRV: ros1.parse_service,
+        InterfaceKind.ACTION: ros1.parse_action,
+    },
+    Dialect.ROS2: {
+        InterfaceKind.MSG: ros2.parse_message,
+        InterfaceKind.SRV: ros2.parse_service,
+        InterfaceKind.ACTION: ros2.parse_action,
+    },
+}
 # Names of the messages a ROS 1 service or action defines, longest suffix first.
 _ROS1_PART_SUFFIXES = (
-    (InterfaceKind.ACTION, "ActionFeedback"), (InterfaceKind.ACTION, "ActionResult"),
-    (InterfaceKind.ACTION, "ActionGoal"), (InterfaceKind.SRV, "Response"),
-    (InterfaceKind.SRV, "Request"), (InterfaceKind.ACTION, "Feedback"),
-    (InterfaceKind.ACTION, "Result"), (InterfaceKind.ACTION, "Action"),
+    (InterfaceKind.ACTION, "ActionFeedback"),
+    (InterfaceKind.ACTION, "ActionResult"),
+    (InterfaceKind.ACTION, "ActionGoal"),
+    (InterfaceKind.SRV, "Response"),
+    (InterfaceKind.SRV, "Request"),
+    (InterfaceKind.ACTION, "Feedback"),
+    (InterfaceKind.ACTION, "Result"),
+    (InterfaceKind.ACTION, "Action"),
     (InterfaceKind.ACTION, "Goal"),
-)  # fmt: skip
+)
 
 
 class TypeNotFound(UserError):
@@ -84,10 +94,17 @@ class Registry:
         """Index every package visible for ``dialect``, user ``paths`` first."""
         missing = [str(p) for p in paths if not Path(p).is_dir()]
         if missing:
-            raise UserError(f"interface folder not found: {', '.join(missing)}",
-                            hint="pass folders that contain ROS packages (with msg/, srv/ or action/)")
-        roots = search_roots(dialect, paths, environ=environ, use_environment=use_environment,
-                             use_builtin=use_builtin)
+            raise UserError(
+                f"interface folder not found: {', '.join(missing)}",
+                hint="pass folders that contain ROS packages (with msg/, srv/ or action/)",
+            )
+        roots = search_roots(
+            dialect,
+            paths,
+            environ=environ,
+            use_environment=use_environment,
+            use_builtin=use_builtin,
+        )
         return cls(dialect, roots)
 
     # --- files ----------------------------------------------------------------------------
@@ -125,7 +142,9 @@ class Registry:
             self._broken[file.path] = error
             raise error from None
         try:
-            parsed = _PARSERS[self.dialect][file.kind](text, file.package, file.name, str(file.path))
+            parsed = _PARSERS[self.dialect][file.kind](
+                text, file.package, file.name, str(file.path)
+            )
         except LocatedError as error:
             self._broken[file.path] = error
             raise
@@ -161,11 +180,15 @@ class Registry:
         kinds = [k for k in InterfaceKind if self._file(k, parts[0], parts[1]) is not None]
         if len(kinds) > 1:
             spelled = " or ".join(f"{parts[0]}/{k.value}/{parts[1]}" for k in kinds)
-            raise UserError(f"'{name}' names both a {' and a '.join(k.value for k in kinds)}",
-                            hint=f"write {spelled}")
+            raise UserError(
+                f"'{name}' names both a {' and a '.join(k.value for k in kinds)}",
+                hint=f"write {spelled}",
+            )
         return self._find_in(parts[0], parts[1], kinds or ())
 
-    def _find_in(self, package: str, short: str, kinds: Iterable[InterfaceKind]) -> Interface | None:
+    def _find_in(
+        self, package: str, short: str, kinds: Iterable[InterfaceKind]
+    ) -> Interface | None:
         for kind in kinds:
             file = self._file(kind, package, short)
             if file is not None:
@@ -208,8 +231,9 @@ class Registry:
         """The message with this full name (as field types store it)."""
         found = self.get(full_name, used_at=used_at)
         if not isinstance(found, MessageSpec):
-            raise self._not_found(full_name, used_at, note=f"'{full_name}' is a {found.kind.value}, "
-                                  "not a message")
+            raise self._not_found(
+                full_name, used_at, note=f"'{full_name}' is a {found.kind.value}, not a message"
+            )
         return found
 
     def known_names(self) -> list[str]:
@@ -250,15 +274,25 @@ class Registry:
             raise LocatedError(_unique(problems))
         return [found[name] for name in sorted(found)]
 
-    def _visit(self, message: MessageSpec, found: dict[str, MessageSpec], path: list[str],
-               problems: list[Diagnostic]) -> None:
+    def _visit(
+        self,
+        message: MessageSpec,
+        found: dict[str, MessageSpec],
+        path: list[str],
+        problems: list[Diagnostic],
+    ) -> None:
         if message.full_name in found:
             return
         if message.full_name in path:
             cycle = " -> ".join([*path[path.index(message.full_name) :], message.full_name])
             where = SourceLocation(message.source or message.full_name)
-            problems.append(Diagnostic(where, f"types refer to each other in a cycle: {cycle}",
-                                       hint="ROS messages cannot contain themselves"))
+            problems.append(
+                Diagnostic(
+                    where,
+                    f"types refer to each other in a cycle: {cycle}",
+                    hint="ROS messages cannot contain themselves",
+                )
+            )
             return
         path.append(message.full_name)
         for field in message.fields:

@@ -65,8 +65,11 @@ def _array_part(token: str, col: int) -> tuple[str, ArrayKind, int | None]:
     except ValueError:
         size = 0
     if size <= 0:
-        raise _Problem(col + open_at + 1, f"invalid array size '{inside}' in '{token}'",
-                       expected="an integer > 0, optionally prefixed with '<='")
+        raise _Problem(
+            col + open_at + 1,
+            f"invalid array size '{inside}' in '{token}'",
+            expected="an integer > 0, optionally prefixed with '<='",
+        )
     return base, ArrayKind.BOUNDED if bounded else ArrayKind.FIXED, size
 
 
@@ -79,8 +82,11 @@ def _type_ref(token: str, package: str, col: int) -> TypeRef:
             bound_text = base[len(string_type) + 2 :]
             bound = int(bound_text) if bound_text.isdigit() else 0
             if bound <= 0:
-                raise _Problem(col, f"invalid string bound in '{base}'",
-                               expected=f"{string_type}<=N with N an integer > 0")
+                raise _Problem(
+                    col,
+                    f"invalid string bound in '{base}'",
+                    expected=f"{string_type}<=N with N an integer > 0",
+                )
             return TypeRef(string_type, array, size, string_bound=bound)
     parts = base.split("/")
     if len(parts) > 2 or not parts[-1]:
@@ -89,8 +95,11 @@ def _type_ref(token: str, package: str, col: int) -> TypeRef:
     if not _PACKAGE_OR_FIELD.match(pkg):
         raise _Problem(col, f"'{pkg}' is not a valid package name", expected=_FIELD_PATTERN_TEXT)
     if not _MESSAGE_NAME.match(name):
-        raise _Problem(col + len(base) - len(name), f"'{name}' is not a valid message name",
-                       expected="an upper case letter followed by letters and digits")
+        raise _Problem(
+            col + len(base) - len(name),
+            f"'{name}' is not a valid message name",
+            expected="an upper case letter followed by letters and digits",
+        )
     return TypeRef(f"{pkg}/msg/{name}", array, size)
 
 
@@ -201,28 +210,38 @@ def default_value(ref: TypeRef, text: str) -> Value:
 def _declaration(code: str, package: str) -> Field | Constant:
     """One declaration line (comment removed, right-stripped); raises _Problem."""
     if code[:1] == " ":
-        raise _Problem(1, "a declaration must start at the beginning of the line",
-                       expected="'TYPE NAME' without leading whitespace")
+        raise _Problem(
+            1,
+            "a declaration must start at the beginning of the line",
+            expected="'TYPE NAME' without leading whitespace",
+        )
     type_text, _, rest = code.partition(" ")
     rest_col = len(type_text) + 2 + (len(rest) - len(rest.lstrip()))
     rest = rest.lstrip()
     if not rest:
-        raise _Problem(len(code) + 1, f"'{type_text}' is not followed by a name",
-                       expected="'TYPE NAME', 'TYPE NAME DEFAULT' or 'TYPE NAME=VALUE'")
+        raise _Problem(
+            len(code) + 1,
+            f"'{type_text}' is not followed by a name",
+            expected="'TYPE NAME', 'TYPE NAME DEFAULT' or 'TYPE NAME=VALUE'",
+        )
     if "=" in rest:
         return _constant(type_text, rest, rest_col)
     name, _, default_text = rest.partition(" ")
     default_text = default_text.lstrip()
     ref = _type_ref(type_text, package, 1)
     if not _PACKAGE_OR_FIELD.match(name):
-        raise _Problem(rest_col, f"'{name}' is not a valid field name", expected=_FIELD_PATTERN_TEXT)
+        raise _Problem(
+            rest_col, f"'{name}' is not a valid field name", expected=_FIELD_PATTERN_TEXT
+        )
     default = None
     if default_text:
         try:
             default = default_value(ref, default_text)
         except ValueError as exc:
-            raise _Problem(code.rfind(default_text) + 1,
-                           f"invalid default value '{default_text}' for {ref}: {exc}") from None
+            raise _Problem(
+                code.rfind(default_text) + 1,
+                f"invalid default value '{default_text}' for {ref}: {exc}",
+            ) from None
     return Field(ref, name, default=default, type_text=type_text)
 
 
@@ -230,16 +249,24 @@ def _constant(type_text: str, rest: str, rest_col: int) -> Constant:
     name, _, value_text = rest.partition("=")
     name, value_text = name.rstrip(), value_text.lstrip()
     if type_text not in ROS2_PRIMITIVES and type_text not in _COMPAT_PRIMITIVES:
-        raise _Problem(1, f"constants must have a primitive type, not '{type_text}'",
-                       expected="one of " + ", ".join(ROS2_PRIMITIVES))
+        raise _Problem(
+            1,
+            f"constants must have a primitive type, not '{type_text}'",
+            expected="one of " + ", ".join(ROS2_PRIMITIVES),
+        )
     if not _CONSTANT_NAME.match(name):
-        raise _Problem(rest_col, f"'{name}' is not a valid constant name",
-                       expected="upper case letters, digits and single '_'")
+        raise _Problem(
+            rest_col,
+            f"'{name}' is not a valid constant name",
+            expected="upper case letters, digits and single '_'",
+        )
     try:
         value = primitive_value(TypeRef(type_text), value_text)
     except ValueError as exc:
-        raise _Problem(rest_col + len(rest) - len(value_text),
-                       f"invalid {type_text} constant value '{value_text}': {exc}") from None
+        raise _Problem(
+            rest_col + len(rest) - len(value_text),
+            f"invalid {type_text} constant value '{value_text}': {exc}",
+        ) from None
     return Constant(type_text, name, value, value_text)
 
 
@@ -265,9 +292,15 @@ def _duplicates(
 
 
 def _message(
-    lines: list[tuple[int, str]], text: str, package: str, name: str, path: str,
-    *, subfolder: str = "msg", owner: str | None = None,
-) -> tuple[MessageSpec, list[Diagnostic]]:  # fmt: skip
+    lines: list[tuple[int, str]],
+    text: str,
+    package: str,
+    name: str,
+    path: str,
+    *,
+    subfolder: str = "msg",
+    owner: str | None = None,
+) -> tuple[MessageSpec, list[Diagnostic]]:
     problems: list[Diagnostic] = []
     docs = CommentTracker()
     items: list[tuple[Field | Constant, list[str], SourceLocation]] = []
@@ -290,8 +323,18 @@ def _message(
     problems += _duplicates(items, dict(lines))
     fields = tuple(_finish(*entry) for entry in items if isinstance(entry[0], Field))
     constants = tuple(_finish(*entry) for entry in items if isinstance(entry[0], Constant))
-    spec = MessageSpec(package, name, Dialect.ROS2, fields, constants, text,  # type: ignore[arg-type]
-                       docs.message_doc, path, subfolder, owner)
+    spec = MessageSpec(
+        package,
+        name,
+        Dialect.ROS2,
+        fields,
+        constants,
+        text,  # type: ignore[arg-type]
+        docs.message_doc,
+        path,
+        subfolder,
+        owner,
+    )
     return spec, problems
 
 
@@ -330,29 +373,47 @@ def _derived_service(
     package: str, name: str, request: tuple[Field, ...], response: tuple[Field, ...], owner: str
 ) -> ServiceSpec:
     """A service rosidl derives for an action (no file of its own), such as ``_SendGoal``."""
-    return _with_event(ServiceSpec(
-        package, name, Dialect.ROS2,
-        _derived(package, name + "_Request", request, owner),
-        _derived(package, name + "_Response", response, owner),
-        subfolder="action", owner=owner,
-    ))  # fmt: skip
+    return _with_event(
+        ServiceSpec(
+            package,
+            name,
+            Dialect.ROS2,
+            _derived(package, name + "_Request", request, owner),
+            _derived(package, name + "_Response", response, owner),
+            subfolder="action",
+            owner=owner,
+        )
+    )
 
 
 def _with_event(service: ServiceSpec) -> ServiceSpec:
     """Add the ``_Event`` message that rosidl derives for every service since Iron."""
     prefix = f"{service.package}/{service.subfolder}/{service.name}"
     event = MessageSpec(
-        service.package, service.name + "_Event", Dialect.ROS2,
+        service.package,
+        service.name + "_Event",
+        Dialect.ROS2,
         fields=(
             Field(TypeRef("service_msgs/msg/ServiceEventInfo"), "info"),
             Field(TypeRef(prefix + "_Request", ArrayKind.BOUNDED, 1), "request"),
             Field(TypeRef(prefix + "_Response", ArrayKind.BOUNDED, 1), "response"),
         ),
-        source=service.source, subfolder=service.subfolder, owner=service.full_name,
-    )  # fmt: skip
-    return ServiceSpec(service.package, service.name, service.dialect, service.request,
-                       service.response, service.text, service.source, event, service.subfolder,
-                       service.owner)
+        source=service.source,
+        subfolder=service.subfolder,
+        owner=service.full_name,
+    )
+    return ServiceSpec(
+        service.package,
+        service.name,
+        service.dialect,
+        service.request,
+        service.response,
+        service.text,
+        service.source,
+        event,
+        service.subfolder,
+        service.owner,
+    )
 
 
 def parse_service(text: str, package: str, name: str, path: str = "<string>") -> ServiceSpec:
@@ -362,8 +423,9 @@ def parse_service(text: str, package: str, name: str, path: str = "<string>") ->
     halves, problems = [], []
     for lines, suffix in ((request_lines, "_Request"), (response_lines, "_Response")):
         half_text = "\n".join(line for _, line in lines)
-        spec, bad = _message(lines, half_text, package, name + suffix, path, subfolder="srv",
-                             owner=owner)
+        spec, bad = _message(
+            lines, half_text, package, name + suffix, path, subfolder="srv", owner=owner
+        )
         halves.append(spec)
         problems += bad
     if problems:
@@ -378,8 +440,9 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     parts, problems = [], []
     for lines, suffix in zip(sections, ("_Goal", "_Result", "_Feedback"), strict=True):
         part_text = "\n".join(line for _, line in lines)
-        spec, bad = _message(lines, part_text, package, name + suffix, path, subfolder="action",
-                             owner=owner)
+        spec, bad = _message(
+            lines, part_text, package, name + suffix, path, subfolder="action", owner=owner
+        )
         parts.append(spec)
         problems += bad
     if problems:
@@ -387,18 +450,35 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     prefix = f"{package}/action/{name}"
     goal_id = Field(TypeRef("unique_identifier_msgs/msg/UUID"), "goal_id")
     send_goal = _derived_service(
-        package, name + "_SendGoal", (goal_id, Field(TypeRef(prefix + "_Goal"), "goal")),
-        (Field(TypeRef("bool"), "accepted"), Field(TypeRef("builtin_interfaces/msg/Time"), "stamp")),
+        package,
+        name + "_SendGoal",
+        (goal_id, Field(TypeRef(prefix + "_Goal"), "goal")),
+        (
+            Field(TypeRef("bool"), "accepted"),
+            Field(TypeRef("builtin_interfaces/msg/Time"), "stamp"),
+        ),
         owner,
-    )  # fmt: skip
+    )
     get_result = _derived_service(
-        package, name + "_GetResult", (goal_id,),
+        package,
+        name + "_GetResult",
+        (goal_id,),
         (Field(TypeRef("int8"), "status"), Field(TypeRef(prefix + "_Result"), "result")),
         owner,
-    )  # fmt: skip
+    )
     feedback_message = _derived(
-        package, name + "_FeedbackMessage",
-        (goal_id, Field(TypeRef(prefix + "_Feedback"), "feedback")), owner,
-    )  # fmt: skip
-    return ActionSpec(package, name, Dialect.ROS2, *parts, text=text, source=path,
-                      derived=(feedback_message,), services=(send_goal, get_result))
+        package,
+        name + "_FeedbackMessage",
+        (goal_id, Field(TypeRef(prefix + "_Feedback"), "feedback")),
+        owner,
+    )
+    return ActionSpec(
+        package,
+        name,
+        Dialect.ROS2,
+        *parts,
+        text=text,
+        source=path,
+        derived=(feedback_message,),
+        services=(send_goal, get_result),
+    )

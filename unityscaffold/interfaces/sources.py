@@ -25,7 +25,21 @@ from unityscaffold.interfaces.model import Dialect, InterfaceKind
 __all__ = ["InterfaceFile", "PackageDir", "SearchRoot", "builtin_root", "discover", "search_roots"]
 
 _ROS1_DISTROS = frozenset(
-    ["boxturtle", "cturtle", "diamondback", "electric", "fuerte", "groovy", "hydro", "indigo", "jade", "kinetic", "lunar", "melodic", "noetic"]
+    [
+        "boxturtle",
+        "cturtle",
+        "diamondback",
+        "electric",
+        "fuerte",
+        "groovy",
+        "hydro",
+        "indigo",
+        "jade",
+        "kinetic",
+        "lunar",
+        "melodic",
+        "noetic",
+    ]
 )
 _SUBDIRS = tuple(kind.value for kind in InterfaceKind)
 _SKIP_DIRS = frozenset({"build", "devel", "log", "node_modules", "__pycache__"})
@@ -66,8 +80,9 @@ class PackageDir:
                 continue
             for entry in entries:
                 if entry.endswith(kind.suffix) and not entry.startswith("."):
-                    yield InterfaceFile(self.name, entry[: -len(kind.suffix)], kind, folder / entry,
-                                        self.origin)
+                    yield InterfaceFile(
+                        self.name, entry[: -len(kind.suffix)], kind, folder / entry, self.origin
+                    )
 
 
 def builtin_root(dialect: Dialect) -> Path:
@@ -100,20 +115,27 @@ def search_roots(
     roots = [SearchRoot(Path(p), "given path") for p in user_paths]
     if use_environment:
         if dialect is Dialect.ROS1:
-            roots += [SearchRoot(p, "ROS_PACKAGE_PATH") for p in _split_env(env.get("ROS_PACKAGE_PATH"))]
+            roots += [
+                SearchRoot(p, "ROS_PACKAGE_PATH") for p in _split_env(env.get("ROS_PACKAGE_PATH"))
+            ]
         else:
-            roots += [SearchRoot(p / "share", "AMENT_PREFIX_PATH", recursive=False)
-                      for p in _split_env(env.get("AMENT_PREFIX_PATH"))]
-        roots += [SearchRoot(p / "share", "CMAKE_PREFIX_PATH", recursive=False)
-                  for p in _split_env(env.get("CMAKE_PREFIX_PATH"))]
+            roots += [
+                SearchRoot(p / "share", "AMENT_PREFIX_PATH", recursive=False)
+                for p in _split_env(env.get("AMENT_PREFIX_PATH"))
+            ]
+        roots += [
+            SearchRoot(p / "share", "CMAKE_PREFIX_PATH", recursive=False)
+            for p in _split_env(env.get("CMAKE_PREFIX_PATH"))
+        ]
         roots += [SearchRoot(p, "/opt/ros", recursive=False) for p in _opt_ros_shares(dialect)]
         if dialect is Dialect.ROS1:
             roots.append(SearchRoot(Path("/usr/share"), "Debian packages", recursive=False))
         else:
             prefix_share = Path(sys.prefix) / "share"
             if (prefix_share / "ament_index").is_dir():
-                roots.append(SearchRoot(prefix_share, "Python prefix (ROS 2 wheels)",
-                                        recursive=False))
+                roots.append(
+                    SearchRoot(prefix_share, "Python prefix (ROS 2 wheels)", recursive=False)
+                )
     if use_builtin:
         roots.append(SearchRoot(builtin_root(dialect), "built-in", recursive=False))
     return roots
@@ -146,8 +168,9 @@ def _walk(root: SearchRoot) -> Iterator[Path]:
                 yield Path(entry.path)
         return
     for current, dirs, _files in os.walk(root.path):
-        dirs[:] = sorted(d for d in dirs
-                         if not d.startswith(".") and d not in _SKIP_DIRS and d not in _SUBDIRS)
+        dirs[:] = sorted(
+            d for d in dirs if not d.startswith(".") and d not in _SKIP_DIRS and d not in _SUBDIRS
+        )
         for d in dirs:
             candidate = Path(current) / d
             if _is_package(candidate):

@@ -25,9 +25,12 @@ def _duplicates(r: Reader, items: Sequence[Topic | Service], label: str) -> set[
         here = item.locations.of("name")
         if key in first:
             repeats.add(index)
-            r.error(here, f"duplicate {label} '{item.name}'",
-                    hint=f"'{key}' is already listed on line {first[key].line}; "
-                    f"each {label} appears once")
+            r.error(
+                here,
+                f"duplicate {label} '{item.name}'",
+                hint=f"'{key}' is already listed on line {first[key].line}; "
+                f"each {label} appears once",
+            )
         else:
             first[key] = here
     return repeats
@@ -46,12 +49,17 @@ def _class_clashes(r: Reader, items: Sequence[tuple[str, Topic | Service]]) -> N
             continue
         other_label, other = seen[key]
         at = "class" if item.locations.has("class") else "name"
-        same_case = "" if other.class_name == item.class_name else \
-            f" (same file name as '{other.class_name}' on case-insensitive systems)"
-        r.error(item.locations.of(at),
-                f"{label} '{item.name}' would generate class '{item.class_name}', like "
-                f"{other_label} '{other.name}' on line {other.locations.item.line}{same_case}",
-                hint="give one of them its own 'class:'")
+        same_case = (
+            ""
+            if other.class_name == item.class_name
+            else f" (same file name as '{other.class_name}' on case-insensitive systems)"
+        )
+        r.error(
+            item.locations.of(at),
+            f"{label} '{item.name}' would generate class '{item.class_name}', like "
+            f"{other_label} '{other.name}' on line {other.locations.item.line}{same_case}",
+            hint="give one of them its own 'class:'",
+        )
 
 
 def _component_repeats(r: Reader, components: Sequence[Component]) -> None:
@@ -60,19 +68,23 @@ def _component_repeats(r: Reader, components: Sequence[Component]) -> None:
     for c in components:
         key = (c.scene, c.gameobject, c.script)
         if key in first:
-            r.error(c.locations.item, f"component '{c.script}' is listed twice for "
-                    f"GameObject '{c.gameobject}'",
-                    hint=f"merge its fields into the entry on line {first[key].line}")
+            r.error(
+                c.locations.item,
+                f"component '{c.script}' is listed twice for GameObject '{c.gameobject}'",
+                hint=f"merge its fields into the entry on line {first[key].line}",
+            )
         else:
             first[key] = c.locations.item
 
 
-def check_across(r: Reader, topics: Sequence[Topic], services: Sequence[Service],
-                 components: Sequence[Component]) -> None:
+def check_across(
+    r: Reader, topics: Sequence[Topic], services: Sequence[Service], components: Sequence[Component]
+) -> None:
     repeated_topics = _duplicates(r, topics, "topic")
     repeated_services = _duplicates(r, services, "service")
     generated: list[tuple[str, Topic | Service]] = [
-        ("topic", t) for i, t in enumerate(topics) if i not in repeated_topics]
+        ("topic", t) for i, t in enumerate(topics) if i not in repeated_topics
+    ]
     generated += [("service", s) for i, s in enumerate(services) if i not in repeated_services]
     _class_clashes(r, generated)
     _component_repeats(r, components)

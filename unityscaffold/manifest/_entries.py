@@ -22,8 +22,15 @@ from unityscaffold.manifest.model import (
     is_csharp_identifier,
 )
 
-__all__ = ["Context", "locations", "read_component", "read_gameobject", "read_scene",
-           "read_service", "read_topic"]
+__all__ = [
+    "Context",
+    "locations",
+    "read_component",
+    "read_gameobject",
+    "read_scene",
+    "read_service",
+    "read_topic",
+]
 
 EXPECT_NAME = "a ROS name such as /cmd_vel: letters, digits, '_' and '/'"
 EXPECT_GAMEOBJECT = "a hierarchy path such as Robot/base_link"
@@ -52,11 +59,13 @@ def read_scene(r: Reader, m: YMap, ctx: Context, label: str) -> str | None:
     if entry is None:
         if ctx.scene is None and not ctx.scene_written:
             where = "under 'connector:'" if label == "connector" else "to this entry"
-            r.error(m.location, f"no scene for this {label}",
-                    hint=f"add a top-level 'scene:' for every entry, or 'scene:' {where}")
+            r.error(
+                m.location,
+                f"no scene for this {label}",
+                hint=f"add a top-level 'scene:' for every entry, or 'scene:' {where}",
+            )
         return ctx.scene
-    value = r.text(m, "scene", EXPECT_SCENE, spec.SCENE,
-                   hint="a scene file ends in .unity")
+    value = r.text(m, "scene", EXPECT_SCENE, spec.SCENE, hint="a scene file ends in .unity")
     if value is None:
         return None
     return project_path(r, entry, value, ctx.project_root, expected=EXPECT_SCENE)
@@ -94,8 +103,10 @@ def _type_hint(m: YMap, wrong_kind: str, where: str) -> str | None:
     entry = m.get("type")
     value = getattr(entry.value, "value", None) if entry else None
     if isinstance(value, str) and f"/{wrong_kind}/" in value:
-        return f"'{value}' is a {'service' if wrong_kind == 'srv' else 'message'} type; " \
-               f"list it under '{where}'"
+        return (
+            f"'{value}' is a {'service' if wrong_kind == 'srv' else 'message'} type; "
+            f"list it under '{where}'"
+        )
     return None
 
 
@@ -116,34 +127,51 @@ def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:
     if m is None:
         return None
     name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
-    type_ = r.text(m, "type", "a message type such as geometry_msgs/Twist", spec.MSG_TYPE,
-                   hint=_type_hint(m, "srv", "services"))
+    type_ = r.text(
+        m,
+        "type",
+        "a message type such as geometry_msgs/Twist",
+        spec.MSG_TYPE,
+        hint=_type_hint(m, "srv", "services"),
+    )
     choice = r.choice(m, "direction", [d.value for d in Direction])
     direction = Direction(choice) if choice else None
     rate, throttle, queue = _rates(r, m, direction)
     topic = Topic(
-        name=name or "", type=type_ or "", direction=direction or Direction.PUBLISH,
+        name=name or "",
+        type=type_ or "",
+        direction=direction or Direction.PUBLISH,
         gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
         scene=read_scene(r, m, ctx, "topic") or "",
-        create=_create(r, m, ctx), class_name=_class_name(r, m, name, direction),
-        rate=rate, throttle=throttle, queue=queue, locations=locations(m),
+        create=_create(r, m, ctx),
+        class_name=_class_name(r, m, name, direction),
+        rate=rate,
+        throttle=throttle,
+        queue=queue,
+        locations=locations(m),
     )
     return topic if name and type_ and direction else None
 
 
-def _rates(r: Reader, m: YMap, direction: Direction | None
-           ) -> tuple[float | None, int | None, int | None]:
+def _rates(
+    r: Reader, m: YMap, direction: Direction | None
+) -> tuple[float | None, int | None, int | None]:
     """``rate`` for publishers, ``throttle``/``queue`` for subscribers; misplaced ones fail."""
     if direction is Direction.SUBSCRIBE and (entry := m.get("rate")) is not None:
-        r.error(entry.key_location, "'rate' applies only to topics with direction: publish",
-                hint="a subscriber gets messages at the publisher's rate; use 'throttle' "
-                "(milliseconds between messages) to slow them down")
+        r.error(
+            entry.key_location,
+            "'rate' applies only to topics with direction: publish",
+            hint="a subscriber gets messages at the publisher's rate; use 'throttle' "
+            "(milliseconds between messages) to slow them down",
+        )
     if direction is Direction.PUBLISH:
         for key in ("throttle", "queue"):
             if (entry := m.get(key)) is not None:
-                r.error(entry.key_location,
-                        f"'{key}' applies only to topics with direction: subscribe",
-                        hint="use 'rate' (messages per second) to set how often Unity publishes")
+                r.error(
+                    entry.key_location,
+                    f"'{key}' applies only to topics with direction: subscribe",
+                    hint="use 'rate' (messages per second) to set how often Unity publishes",
+                )
     rate = throttle = queue = None
     if direction is not Direction.SUBSCRIBE:
         rate = r.positive_number(m, "rate", "messages per second")
@@ -163,15 +191,23 @@ def read_service(r: Reader, node: YNode, ctx: Context) -> Service | None:
     if m is None:
         return None
     name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
-    type_ = r.text(m, "type", "a service type such as std_srvs/Trigger", spec.SRV_TYPE,
-                   hint=_type_hint(m, "msg", "topics"))
+    type_ = r.text(
+        m,
+        "type",
+        "a service type such as std_srvs/Trigger",
+        spec.SRV_TYPE,
+        hint=_type_hint(m, "msg", "topics"),
+    )
     choice = r.choice(m, "role", [x.value for x in Role])
     role = Role(choice) if choice else None
     service = Service(
-        name=name or "", type=type_ or "", role=role or Role.CLIENT,
+        name=name or "",
+        type=type_ or "",
+        role=role or Role.CLIENT,
         gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
         scene=read_scene(r, m, ctx, "service") or "",
-        create=_create(r, m, ctx), class_name=_class_name(r, m, name, role),
+        create=_create(r, m, ctx),
+        class_name=_class_name(r, m, name, role),
         locations=locations(m),
     )
     return service if name and type_ and role else None
@@ -184,9 +220,12 @@ def read_component(r: Reader, node: YNode, ctx: Context) -> Component | None:
     script = _script(r, m, ctx)
     gameobject = read_gameobject(r, m, None)
     component = Component(
-        script=script or "", gameobject=gameobject or "",
-        scene=read_scene(r, m, ctx, "component") or "", create=_create(r, m, ctx),
-        fields=read_fields(r, m), locations=locations(m),
+        script=script or "",
+        gameobject=gameobject or "",
+        scene=read_scene(r, m, ctx, "component") or "",
+        create=_create(r, m, ctx),
+        fields=read_fields(r, m),
+        locations=locations(m),
     )
     return component if script and gameobject else None
 
@@ -200,8 +239,11 @@ def _script(r: Reader, m: YMap, ctx: Context) -> str | None:
     if value.endswith(".cs"):
         return project_path(r, entry, value, ctx.project_root, expected=EXPECT_SCRIPT)
     if not re.fullmatch(spec.NAMESPACE.strip("^$"), value):
-        r.invalid(entry, EXPECT_SCRIPT, hint="a class name may be qualified with its "
-                  "namespace (RosSharp.RosBridgeClient.TwistSubscriber)")
+        r.invalid(
+            entry,
+            EXPECT_SCRIPT,
+            hint="a class name may be qualified with its "
+            "namespace (RosSharp.RosBridgeClient.TwistSubscriber)",
+        )
         return None
     return value
-

@@ -47,8 +47,11 @@ def read_fields(r: Reader, m: YMap) -> tuple[ComponentField, ...]:
     fields = []
     for field in entry.value.entries:
         if not _FIELD_NAME.fullmatch(field.key):
-            r.error(field.key_location, f"invalid field name '{field.key}'",
-                    expected="the C# name of a serialized field, e.g. Topic")
+            r.error(
+                field.key_location,
+                f"invalid field name '{field.key}'",
+                expected="the C# name of a serialized field, e.g. Topic",
+            )
         value = _value(r, field.value, field.key)
         if value is not None:
             fields.append(ComponentField(field.key, value, field.value.location))
@@ -64,18 +67,24 @@ def _value(r: Reader, node: YNode, name: str) -> FieldValue | None:
         return StructValue(tuple((k, v) for k, v in members if v is not None))
     value = node.value
     if value is None:
-        r.error(node.location, f"field '{name}' has no value",
-                expected="a number, text, true/false, a list, a mapping or an @reference",
-                hint="remove the field to keep the component's default")
+        r.error(
+            node.location,
+            f"field '{name}' has no value",
+            expected="a number, text, true/false, a list, a mapping or an @reference",
+            hint="remove the field to keep the component's default",
+        )
         return None
     if isinstance(value, str) and value.startswith("@"):
         if value.startswith("@@"):
             return value[1:]
         reference = parse_reference(value)
         if reference is None:
-            r.error(node.location, f"invalid object reference {describe(node)} in field "
-                    f"'{name}'", expected=EXPECT_REFERENCE,
-                    hint="write '@@' at the start for text that begins with '@'")
+            r.error(
+                node.location,
+                f"invalid object reference {describe(node)} in field '{name}'",
+                expected=EXPECT_REFERENCE,
+                hint="write '@@' at the start for text that begins with '@'",
+            )
         return reference
     assert isinstance(value, (bool, int, float, str))
     return value

@@ -22,8 +22,11 @@ _DRIVE = re.compile(r"^[A-Za-z]:")
 
 def _portable(reader: Reader, entry: YEntry, value: str) -> bool:
     if "\\" in value:
-        reader.invalid(entry, "a path with '/' separators",
-                       hint="write '/' between folders: the manifest is shared across systems")
+        reader.invalid(
+            entry,
+            "a path with '/' separators",
+            hint="write '/' between folders: the manifest is shared across systems",
+        )
         return False
     return True
 
@@ -32,8 +35,15 @@ def _is_absolute(value: str) -> bool:
     return value.startswith("/") or bool(_DRIVE.match(value))
 
 
-def project_path(reader: Reader, entry: YEntry, value: str, project_root: Path, *,
-                 expected: str, under: str | None = None) -> str | None:
+def project_path(
+    reader: Reader,
+    entry: YEntry,
+    value: str,
+    project_root: Path,
+    *,
+    expected: str,
+    under: str | None = None,
+) -> str | None:
     """``value`` normalised relative to the project, or None after reporting why it is wrong.
 
     ``under`` (e.g. ``Assets``) is a folder the path must lie strictly inside.
@@ -41,38 +51,57 @@ def project_path(reader: Reader, entry: YEntry, value: str, project_root: Path, 
     if not _portable(reader, entry, value):
         return None
     if _is_absolute(value):
-        reader.invalid(entry, expected, hint="write the path relative to the project root, "
-                       "the folder that holds Assets/")
+        reader.invalid(
+            entry,
+            expected,
+            hint="write the path relative to the project root, the folder that holds Assets/",
+        )
         return None
     norm = posixpath.normpath(value)
     if norm == ".." or norm.startswith("../"):
-        reader.invalid(entry, expected, hint=f"'{value}' leaves the project through '..'; "
-                       "every path must stay inside the project")
+        reader.invalid(
+            entry,
+            expected,
+            hint=f"'{value}' leaves the project through '..'; "
+            "every path must stay inside the project",
+        )
         return None
     if under is not None and not norm.startswith(under + "/"):
-        reader.invalid(entry, expected, hint=f"it must be a folder inside {under}/, where "
-                       f"Unity compiles scripts, e.g. {under}/RosGenerated")
+        reader.invalid(
+            entry,
+            expected,
+            hint=f"it must be a folder inside {under}/, where "
+            f"Unity compiles scripts, e.g. {under}/RosGenerated",
+        )
         return None
     base = project_root / under if under else project_root
     if project_root.is_dir():
         real = (project_root / norm).resolve()
         real_base = base.resolve()
         if real != real_base and not real.is_relative_to(real_base):
-            reader.invalid(entry, expected, hint=f"'{norm}' resolves to {real.as_posix()} "
-                           "through a symbolic link, outside "
-                           f"{'the project' if under is None else under + '/'}")
+            reader.invalid(
+                entry,
+                expected,
+                hint=f"'{norm}' resolves to {real.as_posix()} "
+                "through a symbolic link, outside "
+                f"{'the project' if under is None else under + '/'}",
+            )
             return None
     return PurePosixPath(norm).as_posix()
 
 
-def folder_path(reader: Reader, entry: YEntry, value: str, base: Path, *,
-                allow_absolute: bool) -> Path | None:
+def folder_path(
+    reader: Reader, entry: YEntry, value: str, base: Path, *, allow_absolute: bool
+) -> Path | None:
     """A folder written relative to the manifest (``project``, ``interfaces``), made absolute."""
     if not _portable(reader, entry, value):
         return None
     if _is_absolute(value) and not allow_absolute:
-        reader.invalid(entry, "a path relative to the manifest's folder",
-                       hint="the manifest lives in git beside the project; an absolute path "
-                       "would not work on another machine")
+        reader.invalid(
+            entry,
+            "a path relative to the manifest's folder",
+            hint="the manifest lives in git beside the project; an absolute path "
+            "would not work on another machine",
+        )
         return None
     return Path(posixpath.normpath((base / value).as_posix()))

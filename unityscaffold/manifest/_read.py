@@ -49,19 +49,32 @@ class Reader:
     def __init__(self, sink: DiagnosticSink) -> None:
         self.sink = sink
 
-    def error(self, location: SourceLocation, message: str, *, expected: str | None = None,
-              hint: str | None = None) -> None:
+    def error(
+        self,
+        location: SourceLocation,
+        message: str,
+        *,
+        expected: str | None = None,
+        hint: str | None = None,
+    ) -> None:
         self.sink.add(Diagnostic(location, message, expected=expected, hint=hint))
 
     def invalid(self, entry: YEntry, expected: str, hint: str | None = None) -> None:
-        self.error(entry.value.location, f"invalid value for '{entry.key}': "
-                   f"{describe(entry.value)}", expected=expected, hint=hint)
+        self.error(
+            entry.value.location,
+            f"invalid value for '{entry.key}': {describe(entry.value)}",
+            expected=expected,
+            hint=hint,
+        )
 
     def mapping(self, node: YNode, section: Section) -> YMap | None:
         """``node`` as a mapping with only known keys and every required key, else None."""
         if not isinstance(node, YMap):
-            self.error(node.location, f"this {section.label} is {describe(node)}, not a mapping",
-                       expected=f"a mapping with keys {', '.join(section.names)}")
+            self.error(
+                node.location,
+                f"this {section.label} is {describe(node)}, not a mapping",
+                expected=f"a mapping with keys {', '.join(section.names)}",
+            )
             return None
         meant: set[str] = set()
         for entry in node.entries:
@@ -69,34 +82,45 @@ class Reader:
                 hint = suggest(entry.key, section.names)
                 if hint:
                     meant.add(hint.split("'")[1])
-                self.error(entry.key_location,
-                           f"unknown key '{entry.key}' in {section.label}",
-                           expected=one_of(sorted(section.names)), hint=hint)
+                self.error(
+                    entry.key_location,
+                    f"unknown key '{entry.key}' in {section.label}",
+                    expected=one_of(sorted(section.names)),
+                    hint=hint,
+                )
         # A misspelt required key is reported once, as unknown, not also as missing.
         for name in section.required:
             if node.get(name) is None and name not in meant:
                 doc = section.key(name).doc.replace("`", "")
-                self.error(node.location, f"{section.label} is missing required key '{name}'",
-                           hint=f"{name}: {doc}")
+                self.error(
+                    node.location,
+                    f"{section.label} is missing required key '{name}'",
+                    hint=f"{name}: {doc}",
+                )
         return node
 
-    def scalar(self, m: YMap, key: str, types: tuple[type, ...], expected: str,
-               hint: str | None = None) -> object | None:
+    def scalar(
+        self, m: YMap, key: str, types: tuple[type, ...], expected: str, hint: str | None = None
+    ) -> object | None:
         entry = m.get(key)
         if entry is None:
             return None
         node = entry.value
         # bool is an int in Python, but never a number in a manifest
-        ok = isinstance(node, YScalar) and isinstance(node.value, types) and not (
-            isinstance(node.value, bool) and bool not in types)
+        ok = (
+            isinstance(node, YScalar)
+            and isinstance(node.value, types)
+            and not (isinstance(node.value, bool) and bool not in types)
+        )
         if not ok:
             self.invalid(entry, expected, hint)
             return None
         assert isinstance(node, YScalar)
         return node.value
 
-    def text(self, m: YMap, key: str, expected: str, pattern: str | None = None,
-             hint: str | None = None) -> str | None:
+    def text(
+        self, m: YMap, key: str, expected: str, pattern: str | None = None, hint: str | None = None
+    ) -> str | None:
         value = self.scalar(m, key, (str,), expected, _quote_hint(m, key) or hint)
         if not isinstance(value, str):
             return None
@@ -106,8 +130,9 @@ class Reader:
         return value
 
     def boolean(self, m: YMap, key: str) -> bool | None:
-        value = self.scalar(m, key, (bool,), "true or false",
-                            hint="YAML 1.2 booleans are only true and false")
+        value = self.scalar(
+            m, key, (bool,), "true or false", hint="YAML 1.2 booleans are only true and false"
+        )
         return value if isinstance(value, bool) else None
 
     def integer(self, m: YMap, key: str, minimum: int, unit: str = "") -> int | None:
@@ -151,8 +176,7 @@ class Reader:
             return node.items
         if isinstance(node, YScalar) and node.value is None:
             return ()
-        self.invalid(entry, "a list", hint=f"start each entry of '{key}' on its own line with "
-                     "'- '")
+        self.invalid(entry, "a list", hint=f"start each entry of '{key}' on its own line with '- '")
         return ()
 
 

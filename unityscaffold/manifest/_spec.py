@@ -71,9 +71,16 @@ class Section:
 
 def patterns() -> dict[str, str]:
     """Every pattern by name, for tests that check Python and the schema agree on them."""
-    return {"ros_name": ROS_NAME, "msg_type": MSG_TYPE, "srv_type": SRV_TYPE,
-            "class": CLASS_NAME, "namespace": NAMESPACE, "gameobject": GAMEOBJECT,
-            "scene": SCENE, "url": URL}
+    return {
+        "ros_name": ROS_NAME,
+        "msg_type": MSG_TYPE,
+        "srv_type": SRV_TYPE,
+        "class": CLASS_NAME,
+        "namespace": NAMESPACE,
+        "gameobject": GAMEOBJECT,
+        "scene": SCENE,
+        "url": URL,
+    }
 
 
 def _ref(name: str) -> dict[str, Any]:
@@ -89,115 +96,266 @@ _STR = {"type": "string", "minLength": 1}
 _BOOL = {"type": "boolean"}
 _SCENE = {"type": "string", "pattern": SCENE}
 _GAMEOBJECT = {"type": "string", "pattern": GAMEOBJECT}
-_CREATE = Key("create", "Create the GameObject (and missing parents) if the scene lacks it. "
-              "Overrides the top-level `create_gameobjects`.", _BOOL)
-_CLASS = Key("class", "Name of the generated C# class, overriding the one derived from the "
-             "name (e.g. `/cmd_vel` publish gives `CmdVelPublisher`).",
-             {"type": "string", "pattern": CLASS_NAME})
+_CREATE = Key(
+    "create",
+    "Create the GameObject (and missing parents) if the scene lacks it. "
+    "Overrides the top-level `create_gameobjects`.",
+    _BOOL,
+)
+_CLASS = Key(
+    "class",
+    "Name of the generated C# class, overriding the one derived from the "
+    "name (e.g. `/cmd_vel` publish gives `CmdVelPublisher`).",
+    {"type": "string", "pattern": CLASS_NAME},
+)
 
 
 def _scene_key(what: str) -> Key:
-    return Key("scene", f"Scene that holds the {what}, relative to the project "
-               "(e.g. `Assets/Scenes/Main.unity`). Default: the top-level `scene`.", _SCENE)
+    return Key(
+        "scene",
+        f"Scene that holds the {what}, relative to the project "
+        "(e.g. `Assets/Scenes/Main.unity`). Default: the top-level `scene`.",
+        _SCENE,
+    )
 
 
 def _item_gameobject(what: str) -> Key:
-    return Key("gameobject", f"Hierarchy path (`Parent/Child`) of the GameObject that gets the "
-               f"{what}. Default: the connector's GameObject, which ROS#'s components require.",
-               _GAMEOBJECT)
+    return Key(
+        "gameobject",
+        f"Hierarchy path (`Parent/Child`) of the GameObject that gets the "
+        f"{what}. Default: the connector's GameObject, which ROS#'s components require.",
+        _GAMEOBJECT,
+    )
 
 
-TOP = Section("manifest", "manifest", "A robot.yaml manifest for unityscaffold.", (
-    Key("version", "Manifest format version.", {"type": "integer", "enum": [MANIFEST_VERSION]},
-        required=True),
-    Key("ros", "ROS version of the robot: 1 or 2.", {"type": "integer", "enum": [1, 2]},
-        required=True),
-    Key("project", "Unity project root (the folder holding `Assets/`), relative to this file.",
-        _STR, default="."),
-    Key("output", "Folder for generated code, relative to the project; must be inside "
-        "`Assets/`.", {"type": "string", "pattern": "^(\\./)?Assets/."},
-        default="Assets/RosGenerated"),
-    Key("namespace", "C# root namespace for generated code, overriding the default.",
-        {"type": "string", "pattern": NAMESPACE}),
-    Key("include_shipped", "Also generate classes for message packages that ROS# already "
-        "ships (std_msgs, geometry_msgs, …); normally their ROS# classes are used.",
-        _BOOL, default=False),
-    Key("interfaces", "Extra folders searched for `.msg`/`.srv`/`.action` files (workspaces, "
-        "a definitions cache), relative to this file.", _list_of(_STR)),
-    Key("scene", "Default scene for the connector, topics, services and components, relative "
-        "to the project. Required unless every entry names its own.", _SCENE),
-    Key("create_gameobjects", "Create GameObjects named by entries when the scene lacks them.",
-        _BOOL, default=True),
-    Key("connector", "ROS#'s RosConnector: where it lives and its settings.",
-        {"anyOf": [_ref("connector"), {"type": "null"}]}),
-    Key("topics", "Topics Unity publishes or subscribes to.", _list_of(_ref("topic"))),
-    Key("services", "Services Unity calls or provides.", _list_of(_ref("service"))),
-    Key("components", "Existing MonoBehaviours (yours or ROS#'s) to add with field values.",
-        _list_of(_ref("component"))),
-))
+TOP = Section(
+    "manifest",
+    "manifest",
+    "A robot.yaml manifest for unityscaffold.",
+    (
+        Key(
+            "version",
+            "Manifest format version.",
+            {"type": "integer", "enum": [MANIFEST_VERSION]},
+            required=True,
+        ),
+        Key(
+            "ros",
+            "ROS version of the robot: 1 or 2.",
+            {"type": "integer", "enum": [1, 2]},
+            required=True,
+        ),
+        Key(
+            "project",
+            "Unity project root (the folder holding `Assets/`), relative to this file.",
+            _STR,
+            default=".",
+        ),
+        Key(
+            "output",
+            "Folder for generated code, relative to the project; must be inside `Assets/`.",
+            {"type": "string", "pattern": "^(\\./)?Assets/."},
+            default="Assets/RosGenerated",
+        ),
+        Key(
+            "namespace",
+            "C# root namespace for generated code, overriding the default.",
+            {"type": "string", "pattern": NAMESPACE},
+        ),
+        Key(
+            "include_shipped",
+            "Also generate classes for message packages that ROS# already "
+            "ships (std_msgs, geometry_msgs, …); normally their ROS# classes are used.",
+            _BOOL,
+            default=False,
+        ),
+        Key(
+            "interfaces",
+            "Extra folders searched for `.msg`/`.srv`/`.action` files (workspaces, "
+            "a definitions cache), relative to this file.",
+            _list_of(_STR),
+        ),
+        Key(
+            "scene",
+            "Default scene for the connector, topics, services and components, relative "
+            "to the project. Required unless every entry names its own.",
+            _SCENE,
+        ),
+        Key(
+            "create_gameobjects",
+            "Create GameObjects named by entries when the scene lacks them.",
+            _BOOL,
+            default=True,
+        ),
+        Key(
+            "connector",
+            "ROS#'s RosConnector: where it lives and its settings.",
+            {"anyOf": [_ref("connector"), {"type": "null"}]},
+        ),
+        Key("topics", "Topics Unity publishes or subscribes to.", _list_of(_ref("topic"))),
+        Key("services", "Services Unity calls or provides.", _list_of(_ref("service"))),
+        Key(
+            "components",
+            "Existing MonoBehaviours (yours or ROS#'s) to add with field values.",
+            _list_of(_ref("component")),
+        ),
+    ),
+)
 
-CONNECTOR = Section("connector", "connector", "ROS#'s RosConnector component.", (
-    Key("scene", "Scene of the RosConnector, relative to the project. Default: the "
-        "top-level `scene`.", _SCENE),
-    Key("gameobject", "Hierarchy path of the GameObject holding the RosConnector; created if "
-        "missing.", _GAMEOBJECT, default="RosConnector"),
-    Key("url", "rosbridge WebSocket URL (`RosBridgeServerUrl`).",
-        {"type": "string", "pattern": URL}, default="ws://localhost:9090"),
-    Key("timeout", "Connection timeout in seconds (`SecondsTimeout`).",
-        {"type": "integer", "minimum": 1}, default=DEFAULT_TIMEOUT),
-    Key("serializer", "JSON serializer (`Serializer`): `microsoft` is System.Text.Json.",
-        {"enum": [s.key for s in Serializer]}, default=Serializer.MICROSOFT.key),
-    Key("protocol", "WebSocket implementation (`protocol`).",
-        {"enum": [p.key for p in Protocol]}, default=Protocol.WEBSOCKET_SHARP.key),
-))
+CONNECTOR = Section(
+    "connector",
+    "connector",
+    "ROS#'s RosConnector component.",
+    (
+        Key(
+            "scene",
+            "Scene of the RosConnector, relative to the project. Default: the top-level `scene`.",
+            _SCENE,
+        ),
+        Key(
+            "gameobject",
+            "Hierarchy path of the GameObject holding the RosConnector; created if missing.",
+            _GAMEOBJECT,
+            default="RosConnector",
+        ),
+        Key(
+            "url",
+            "rosbridge WebSocket URL (`RosBridgeServerUrl`).",
+            {"type": "string", "pattern": URL},
+            default="ws://localhost:9090",
+        ),
+        Key(
+            "timeout",
+            "Connection timeout in seconds (`SecondsTimeout`).",
+            {"type": "integer", "minimum": 1},
+            default=DEFAULT_TIMEOUT,
+        ),
+        Key(
+            "serializer",
+            "JSON serializer (`Serializer`): `microsoft` is System.Text.Json.",
+            {"enum": [s.key for s in Serializer]},
+            default=Serializer.MICROSOFT.key,
+        ),
+        Key(
+            "protocol",
+            "WebSocket implementation (`protocol`).",
+            {"enum": [p.key for p in Protocol]},
+            default=Protocol.WEBSOCKET_SHARP.key,
+        ),
+    ),
+)
 
-TOPIC = Section("topic", "topic", "A topic Unity publishes or subscribes to.", (
-    Key("name", "ROS topic name, e.g. `/cmd_vel`.", {"type": "string", "pattern": ROS_NAME},
-        required=True),
-    Key("type", "Message type, `pkg/Name` or `pkg/msg/Name`.",
-        {"type": "string", "pattern": MSG_TYPE}, required=True),
-    Key("direction", "`publish` (Unity sends) or `subscribe` (Unity receives).",
-        {"enum": [d.value for d in Direction]}, required=True),
-    _item_gameobject("generated script"),
-    _scene_key("GameObject"),
-    _CREATE,
-    Key("rate", "Publish only: messages per second (Hz). Absent: publish on demand.",
-        {"type": "number", "exclusiveMinimum": 0}),
-    Key("throttle", "Subscribe only: minimum milliseconds between messages (rosbridge "
-        "`throttle_rate`).", {"type": "integer", "minimum": 0}),
-    Key("queue", "Subscribe only: rosbridge `queue_length`.", {"type": "integer", "minimum": 1}),
-    _CLASS,
-), rules=(
-    {"if": {"properties": {"direction": {"const": "publish"}}, "required": ["direction"]},
-     "then": {"properties": {"throttle": False, "queue": False}}},
-    {"if": {"properties": {"direction": {"const": "subscribe"}}, "required": ["direction"]},
-     "then": {"properties": {"rate": False}}},
-))
+TOPIC = Section(
+    "topic",
+    "topic",
+    "A topic Unity publishes or subscribes to.",
+    (
+        Key(
+            "name",
+            "ROS topic name, e.g. `/cmd_vel`.",
+            {"type": "string", "pattern": ROS_NAME},
+            required=True,
+        ),
+        Key(
+            "type",
+            "Message type, `pkg/Name` or `pkg/msg/Name`.",
+            {"type": "string", "pattern": MSG_TYPE},
+            required=True,
+        ),
+        Key(
+            "direction",
+            "`publish` (Unity sends) or `subscribe` (Unity receives).",
+            {"enum": [d.value for d in Direction]},
+            required=True,
+        ),
+        _item_gameobject("generated script"),
+        _scene_key("GameObject"),
+        _CREATE,
+        Key(
+            "rate",
+            "Publish only: messages per second (Hz). Absent: publish on demand.",
+            {"type": "number", "exclusiveMinimum": 0},
+        ),
+        Key(
+            "throttle",
+            "Subscribe only: minimum milliseconds between messages (rosbridge `throttle_rate`).",
+            {"type": "integer", "minimum": 0},
+        ),
+        Key(
+            "queue", "Subscribe only: rosbridge `queue_length`.", {"type": "integer", "minimum": 1}
+        ),
+        _CLASS,
+    ),
+    rules=(
+        {
+            "if": {"properties": {"direction": {"const": "publish"}}, "required": ["direction"]},
+            "then": {"properties": {"throttle": False, "queue": False}},
+        },
+        {
+            "if": {"properties": {"direction": {"const": "subscribe"}}, "required": ["direction"]},
+            "then": {"properties": {"rate": False}},
+        },
+    ),
+)
 
-SERVICE = Section("service", "service", "A service Unity calls or provides.", (
-    Key("name", "ROS service name, e.g. `/reset`.", {"type": "string", "pattern": ROS_NAME},
-        required=True),
-    Key("type", "Service type, `pkg/Name` or `pkg/srv/Name`.",
-        {"type": "string", "pattern": SRV_TYPE}, required=True),
-    Key("role", "`client` (Unity calls it) or `server` (Unity provides it).",
-        {"enum": [r.value for r in Role]}, required=True),
-    _item_gameobject("generated script"),
-    _scene_key("GameObject"),
-    _CREATE,
-    _CLASS,
-))
+SERVICE = Section(
+    "service",
+    "service",
+    "A service Unity calls or provides.",
+    (
+        Key(
+            "name",
+            "ROS service name, e.g. `/reset`.",
+            {"type": "string", "pattern": ROS_NAME},
+            required=True,
+        ),
+        Key(
+            "type",
+            "Service type, `pkg/Name` or `pkg/srv/Name`.",
+            {"type": "string", "pattern": SRV_TYPE},
+            required=True,
+        ),
+        Key(
+            "role",
+            "`client` (Unity calls it) or `server` (Unity provides it).",
+            {"enum": [r.value for r in Role]},
+            required=True,
+        ),
+        _item_gameobject("generated script"),
+        _scene_key("GameObject"),
+        _CREATE,
+        _CLASS,
+    ),
+)
 
-COMPONENT = Section("component", "component", "An existing MonoBehaviour with field values.", (
-    Key("script", "Class name of the MonoBehaviour (e.g. `TwistSubscriber`) or the path of "
-        "its `.cs` file, relative to the project.", _STR, required=True),
-    Key("gameobject", "Hierarchy path of the GameObject that gets the component.", _GAMEOBJECT,
-        required=True),
-    _scene_key("GameObject"),
-    _CREATE,
-    Key("fields", "Serialized field values by field name. A text starting with `@` refers to "
-        "a GameObject (`@Robot/base_link`) or a component on one "
-        "(`@RosConnector:RosConnector`) in the same scene; write `@@` for a literal `@`.",
-        {"type": ["object", "null"], "additionalProperties": _ref("fieldValue")}),
-))
+COMPONENT = Section(
+    "component",
+    "component",
+    "An existing MonoBehaviour with field values.",
+    (
+        Key(
+            "script",
+            "Class name of the MonoBehaviour (e.g. `TwistSubscriber`) or the path of "
+            "its `.cs` file, relative to the project.",
+            _STR,
+            required=True,
+        ),
+        Key(
+            "gameobject",
+            "Hierarchy path of the GameObject that gets the component.",
+            _GAMEOBJECT,
+            required=True,
+        ),
+        _scene_key("GameObject"),
+        _CREATE,
+        Key(
+            "fields",
+            "Serialized field values by field name. A text starting with `@` refers to "
+            "a GameObject (`@Robot/base_link`) or a component on one "
+            "(`@RosConnector:RosConnector`) in the same scene; write `@@` for a literal `@`.",
+            {"type": ["object", "null"], "additionalProperties": _ref("fieldValue")},
+        ),
+    ),
+)
 
 SECTIONS: tuple[Section, ...] = (TOP, CONNECTOR, TOPIC, SERVICE, COMPONENT)

@@ -69,8 +69,11 @@ def compose(text: str, path: str) -> YNode | None:
         raise _syntax_error(exc, path, lines) from None
     except ReaderError as exc:
         loc = _location_of_offset(text, exc.position, path)
-        raise LocatedError.at(loc, f"invalid character {exc.character!r} in YAML text",
-                              hint="save the manifest as plain UTF-8 text") from None
+        raise LocatedError.at(
+            loc,
+            f"invalid character {exc.character!r} in YAML text",
+            hint="save the manifest as plain UTF-8 text",
+        ) from None
     except YAMLError as exc:
         raise LocatedError.at(SourceLocation(path), f"invalid YAML: {exc}") from None
     except RecursionError:
@@ -85,7 +88,7 @@ def compose(text: str, path: str) -> YNode | None:
 
 def _syntax_error(exc: MarkedYAMLError, path: str, lines: list[str]) -> LocatedError:
     mark = exc.problem_mark or exc.context_mark
-    problem = (exc.problem or exc.context or "syntax error")
+    problem = exc.problem or exc.context or "syntax error"
     problem = problem.replace("'<stream end>'", "the end of the file")
     if exc.context and problem.startswith("but "):
         problem = f"{exc.context}, {problem}"  # ruamel splits some sentences in two
@@ -146,8 +149,11 @@ class _Converter:
     def convert(self, node: Node) -> YNode:
         self._count += 1
         if self._count > _MAX_NODES:
-            raise self.fail(node, "the manifest expands to too many values",
-                            hint="check for YAML aliases (*name) that repeat large blocks")
+            raise self.fail(
+                node,
+                "the manifest expands to too many values",
+                hint="check for YAML aliases (*name) that repeat large blocks",
+            )
         if id(node) in self._active:
             raise self.fail(node, "a YAML alias refers to a block that contains it")
         self._active.add(id(node))
@@ -167,14 +173,20 @@ class _Converter:
     def check_tag(self, node: Node, allowed: str) -> None:
         tag = _tag(node)
         if tag != allowed:
-            raise self.fail(node, f"unsupported YAML tag {tag!r}",
-                            hint="the manifest uses plain YAML values; remove the tag")
+            raise self.fail(
+                node,
+                f"unsupported YAML tag {tag!r}",
+                hint="the manifest uses plain YAML values; remove the tag",
+            )
 
     def scalar(self, node: ScalarNode) -> YScalar:
         tag = _tag(node)
         if tag not in _SCALAR_TAGS:
-            raise self.fail(node, f"unsupported YAML tag {tag!r}",
-                            hint="the manifest uses plain YAML values; remove the tag")
+            raise self.fail(
+                node,
+                f"unsupported YAML tag {tag!r}",
+                hint="the manifest uses plain YAML values; remove the tag",
+            )
         if tag == f"{_CORE}timestamp":
             # Dates mean nothing to a manifest; keep what was written rather than a datetime.
             return YScalar(str(node.value), self.loc(node))
@@ -200,13 +212,17 @@ class _Converter:
                 # An empty value's mark is the next token, often on a later line; point just
                 # after the key's colon instead.
                 mark = key_node.end_mark
-                value = YScalar(None, _location(self._path, self._lines, mark.line,
-                                                mark.column + 1))
+                value = YScalar(
+                    None, _location(self._path, self._lines, mark.line, mark.column + 1)
+                )
             entry = YEntry(key, self.loc(key_node), value)
             if key in seen:
                 first = seen[key].key_location
-                raise self.fail(key_node, f"duplicate key '{key}'",
-                                hint=f"'{key}' is already set on line {first.line}")
+                raise self.fail(
+                    key_node,
+                    f"duplicate key '{key}'",
+                    hint=f"'{key}' is already set on line {first.line}",
+                )
             seen[key] = entry
             explicit.append(entry)
         # YAML merge keys (<<: *base) fill in only what the mapping does not set itself.

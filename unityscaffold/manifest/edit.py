@@ -29,8 +29,15 @@ from unityscaffold.interfaces.live.model import (
     Discovery,
 )
 
-__all__ = ["DEFAULT_GAMEOBJECT", "ManifestEdit", "edit_manifest", "interface_folders",
-           "manifest_fragment", "read_manifest", "write_manifest"]
+__all__ = [
+    "DEFAULT_GAMEOBJECT",
+    "ManifestEdit",
+    "edit_manifest",
+    "interface_folders",
+    "manifest_fragment",
+    "read_manifest",
+    "write_manifest",
+]
 
 DEFAULT_GAMEOBJECT = "RosConnector"
 _TODO = "TODO: direction: publish (Unity sends) or subscribe (Unity receives)"
@@ -67,8 +74,9 @@ def _indentation(text: str) -> tuple[int, int, int]:
     """``(mapping, sequence, offset)`` as ruamel counts them, read from the first nested
     mapping and the first block sequence; ``scaffold init``'s style where there are none."""
     mapping, sequence, offset = 2, 4, 2
-    lines = [line for line in text.splitlines() if line.strip() and
-             not line.lstrip().startswith("#")]
+    lines = [
+        line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")
+    ]
     seen_mapping = seen_sequence = False
     for previous, line in zip(lines, lines[1:]):
         parent = _KEY_ONLY.match(previous)
@@ -90,14 +98,18 @@ def _load(text: str, path: str) -> tuple[YAML, CommentedMap]:
         document = yaml.load(text)
     except YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
-        where = SourceLocation(path, mark.line + 1, mark.column + 1) if mark else \
-            SourceLocation(path)
+        where = (
+            SourceLocation(path, mark.line + 1, mark.column + 1) if mark else SourceLocation(path)
+        )
         raise LocatedError.at(where, f"not valid YAML: {getattr(exc, 'problem', exc)}") from None
     if document is None:
         document = CommentedMap()
     if not isinstance(document, CommentedMap):
-        raise LocatedError.at(SourceLocation(path, 1, 1), "the manifest is not a mapping",
-                              expected="keys such as version, ros, topics")
+        raise LocatedError.at(
+            SourceLocation(path, 1, 1),
+            "the manifest is not a mapping",
+            expected="keys such as version, ros, topics",
+        )
     return yaml, document
 
 
@@ -108,7 +120,9 @@ def _check_dialect(document: CommentedMap, discovery: Discovery, path: str) -> N
         raise LocatedError.at(
             SourceLocation(path, line + 1, col + 1),
             f"the manifest is for ROS {ros}, but {discovery.source} is a "
-            f"{discovery.dialect.label} system", hint="discover into a manifest for the same ROS")
+            f"{discovery.dialect.label} system",
+            hint="discover into a manifest for the same ROS",
+        )
 
 
 def _list(document: CommentedMap, key: str, path: str) -> CommentedSeq:
@@ -158,12 +172,17 @@ def _topic_pairs(topic: DiscoveredTopic) -> list[tuple[str, str]]:
 
 
 def _service_pairs(service: DiscoveredService) -> list[tuple[str, str]]:
-    return [("name", service.name), ("type", service.type), ("role", "client"),
-            ("gameobject", DEFAULT_GAMEOBJECT)]
+    return [
+        ("name", service.name),
+        ("type", service.type),
+        ("role", "client"),
+        ("gameobject", DEFAULT_GAMEOBJECT),
+    ]
 
 
-def _add_topics(seq: CommentedSeq, topics: Iterable[DiscoveredTopic]
-                ) -> tuple[list[str], list[str]]:
+def _add_topics(
+    seq: CommentedSeq, topics: Iterable[DiscoveredTopic]
+) -> tuple[list[str], list[str]]:
     listed = _listed_names(seq)
     added, skipped = [], []
     for topic in topics:
@@ -182,8 +201,9 @@ def _add_topics(seq: CommentedSeq, topics: Iterable[DiscoveredTopic]
     return added, skipped
 
 
-def _add_services(seq: CommentedSeq, services: Iterable[DiscoveredService]
-                  ) -> tuple[list[str], list[str]]:
+def _add_services(
+    seq: CommentedSeq, services: Iterable[DiscoveredService]
+) -> tuple[list[str], list[str]]:
     listed = _listed_names(seq)
     added, skipped = [], []
     for service in services:
@@ -204,23 +224,35 @@ def _add_interface(document: CommentedMap, cache_entry: str, path: str) -> str |
     return cache_entry
 
 
-def edit_manifest(text: str, discovery: Discovery, *, cache_entry: str,
-                  path: str = "robot.yaml") -> ManifestEdit:
+def edit_manifest(
+    text: str, discovery: Discovery, *, cache_entry: str, path: str = "robot.yaml"
+) -> ManifestEdit:
     """``text`` with the discovered topics and services and the cache folder added."""
     yaml, document = _load(text, path)
     _check_dialect(document, discovery, path)
     added_interface = _add_interface(document, cache_entry, path)
     topics, skipped_topics = _add_topics(_list(document, "topics", path), discovery.topics)
-    services, skipped_services = _add_services(_list(document, "services", path),
-                                               discovery.services)
-    result = ManifestEdit(text, tuple(topics), tuple(services),
-                          tuple(skipped_topics + skipped_services), added_interface)
+    services, skipped_services = _add_services(
+        _list(document, "services", path), discovery.services
+    )
+    result = ManifestEdit(
+        text,
+        tuple(topics),
+        tuple(services),
+        tuple(skipped_topics + skipped_services),
+        added_interface,
+    )
     if not result.changed:
         return result
     out = io.StringIO()
     yaml.dump(document, out)
-    return ManifestEdit(out.getvalue(), result.added_topics, result.added_services,
-                        result.already_listed, added_interface)
+    return ManifestEdit(
+        out.getvalue(),
+        result.added_topics,
+        result.added_services,
+        result.already_listed,
+        added_interface,
+    )
 
 
 def manifest_fragment(discovery: Discovery, *, cache_entry: str) -> str:
@@ -248,8 +280,9 @@ def read_manifest(path: Path) -> str:
     try:
         return path.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise UserError(f"manifest not found: {path}",
-                        hint="create one with `scaffold init`, or use --print") from None
+        raise UserError(
+            f"manifest not found: {path}", hint="create one with `scaffold init`, or use --print"
+        ) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise UserError(f"cannot read manifest {path}: {exc}") from None
 

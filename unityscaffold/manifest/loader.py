@@ -42,20 +42,26 @@ def load_manifest(path: Path) -> Manifest:
     try:
         raw = Path(path).read_bytes()
     except FileNotFoundError:
-        raise UserError(f"manifest {path} does not exist",
-                        hint="create one with 'scaffold init', or pass its path") from None
+        raise UserError(
+            f"manifest {path} does not exist",
+            hint="create one with 'scaffold init', or pass its path",
+        ) from None
     except IsADirectoryError:
-        raise UserError(f"{path} is a folder, not a manifest file",
-                        hint=f"pass the manifest inside it, e.g. {Path(path) / 'robot.yaml'}"
-                        ) from None
+        raise UserError(
+            f"{path} is a folder, not a manifest file",
+            hint=f"pass the manifest inside it, e.g. {Path(path) / 'robot.yaml'}",
+        ) from None
     except OSError as exc:
         raise UserError(f"cannot read manifest {path}: {exc.strerror or exc}") from None
     try:
         text = raw.decode("utf-8-sig")  # an editor's BOM is harmless
     except UnicodeDecodeError as exc:
         line = raw[: exc.start].count(b"\n") + 1
-        raise LocatedError.at(SourceLocation(str(path), line), "the manifest is not UTF-8 text",
-                              hint="save it as UTF-8") from None
+        raise LocatedError.at(
+            SourceLocation(str(path), line),
+            "the manifest is not UTF-8 text",
+            hint="save it as UTF-8",
+        ) from None
     return parse_manifest(text, Path(path))
 
 
@@ -64,9 +70,12 @@ def parse_manifest(text: str, path: Path) -> Manifest:
     shown = str(path)
     root = compose(text, shown)
     if root is None or (isinstance(root, YScalar) and root.value is None):
-        raise LocatedError.at(SourceLocation(shown), "the manifest is empty",
-                              expected="a mapping with at least 'version' and 'ros'",
-                              hint="start from the template that 'scaffold init' writes")
+        raise LocatedError.at(
+            SourceLocation(shown),
+            "the manifest is empty",
+            expected="a mapping with at least 'version' and 'ros'",
+            hint="start from the template that 'scaffold init' writes",
+        )
     sink = DiagnosticSink()
     reader = Reader(sink)
     top = reader.mapping(root, spec.TOP)
@@ -91,8 +100,13 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     scene = _top_scene(r, top, project_root)
     create = r.boolean(top, "create_gameobjects")
     connector = _connector(r, top, project_root, scene)
-    ctx = Context(project_root, scene, top.get("scene") is not None,
-                  True if create is None else create, connector.gameobject)
+    ctx = Context(
+        project_root,
+        scene,
+        top.get("scene") is not None,
+        True if create is None else create,
+        connector.gameobject,
+    )
     topics = [read_topic(r, n, ctx) for n in r.items(top, "topics")]
     services = [read_service(r, n, ctx) for n in r.items(top, "services")]
     components = [read_component(r, n, ctx) for n in r.items(top, "components")]
@@ -104,11 +118,20 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         return None
     include = r.boolean(top, "include_shipped")
     return Manifest(
-        path=path, version=version, ros=Dialect(ros), project_root=project_root,
-        output_dir=output_dir, namespace=_namespace(r, top),
-        include_shipped=bool(include), interfaces=_interfaces(r, top, path.parent),
-        scene=scene, create_gameobjects=ctx.create, connector=connector,
-        topics=good_topics, services=good_services, components=good_components,
+        path=path,
+        version=version,
+        ros=Dialect(ros),
+        project_root=project_root,
+        output_dir=output_dir,
+        namespace=_namespace(r, top),
+        include_shipped=bool(include),
+        interfaces=_interfaces(r, top, path.parent),
+        scene=scene,
+        create_gameobjects=ctx.create,
+        connector=connector,
+        topics=good_topics,
+        services=good_services,
+        components=good_components,
         locations=locations(top),
     )
 
@@ -117,10 +140,13 @@ def _version(r: Reader, top: YMap) -> int | None:
     entry = top.get("version")
     value = r.scalar(top, "version", (int,), str(MANIFEST_VERSION))
     if entry is not None and isinstance(value, int) and value != MANIFEST_VERSION:
-        r.error(entry.value.location, f"unsupported manifest version {value}",
-                expected=str(MANIFEST_VERSION),
-                hint=f"this scaffold reads manifest version {MANIFEST_VERSION}; "
-                "upgrade unityscaffold for newer manifests")
+        r.error(
+            entry.value.location,
+            f"unsupported manifest version {value}",
+            expected=str(MANIFEST_VERSION),
+            hint=f"this scaffold reads manifest version {MANIFEST_VERSION}; "
+            "upgrade unityscaffold for newer manifests",
+        )
         return None
     return value if isinstance(value, int) else None
 
@@ -157,8 +183,11 @@ def _namespace(r: Reader, top: YMap) -> str | None:
     value = r.text(top, "namespace", "a C# namespace such as MyRobot.Ros", spec.NAMESPACE)
     keywords = [p for p in (value or "").split(".") if p and not is_csharp_identifier(p)]
     if keywords:
-        r.invalid(top.get("namespace"), "a C# namespace such as MyRobot.Ros",  # type: ignore[arg-type]
-                  hint=f"'{keywords[0]}' is a C# keyword")
+        r.invalid(
+            top.get("namespace"),
+            "a C# namespace such as MyRobot.Ros",  # type: ignore[arg-type]
+            hint=f"'{keywords[0]}' is a C# keyword",
+        )
         return None
     return value
 
@@ -168,12 +197,16 @@ def _interfaces(r: Reader, top: YMap, base: Path) -> tuple[Path, ...]:
     entry = top.get("interfaces")
     for node in r.items(top, "interfaces"):
         if not (isinstance(node, YScalar) and isinstance(node.value, str) and node.value):
-            r.error(node.location, "invalid interfaces folder",
-                    expected="a folder path, relative to the manifest")
+            r.error(
+                node.location,
+                "invalid interfaces folder",
+                expected="a folder path, relative to the manifest",
+            )
             continue
         assert entry is not None
-        folder = folder_path(r, YEntry(entry.key, entry.key_location, node),
-                             node.value, base, allow_absolute=True)
+        folder = folder_path(
+            r, YEntry(entry.key, entry.key_location, node), node.value, base, allow_absolute=True
+        )
         if folder is not None:
             folders.append(folder)
     return tuple(folders)
@@ -185,15 +218,21 @@ def _connector(r: Reader, top: YMap, project_root: Path, scene: str | None) -> C
     if entry is not None and not (isinstance(entry.value, YScalar) and entry.value.value is None):
         m = r.mapping(entry.value, spec.CONNECTOR) or m
     defaults = {k.name: k.default for k in spec.CONNECTOR.keys}
-    ctx = Context(project_root, scene, top.get("scene") is not None, True,
-                  str(defaults["gameobject"]))
+    ctx = Context(
+        project_root, scene, top.get("scene") is not None, True, str(defaults["gameobject"])
+    )
     serializer = r.choice(m, "serializer", [s.key for s in Serializer])
     protocol = r.choice(m, "protocol", [p.key for p in Protocol])
     return Connector(
         scene=read_scene(r, m, ctx, "connector") or "",
         gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
-        url=r.text(m, "url", "a rosbridge URL such as ws://localhost:9090", spec.URL,
-                   hint="rosbridge listens on ws:// (or wss://) host:port")
+        url=r.text(
+            m,
+            "url",
+            "a rosbridge URL such as ws://localhost:9090",
+            spec.URL,
+            hint="rosbridge listens on ws:// (or wss://) host:port",
+        )
         or str(defaults["url"]),
         timeout=r.integer(m, "timeout", 1, "seconds") or spec.DEFAULT_TIMEOUT,
         serializer=next(s for s in Serializer if s.key == (serializer or defaults["serializer"])),

@@ -257,13 +257,16 @@ class Manifest:
 
 # The reserved C# keywords (codegen.naming keeps the same list plus the contextual ones, which
 # are legal class names); a class named after one would not compile.
-_CSHARP_KEYWORDS = frozenset((  # noqa: SIM905
-    "abstract as base bool break byte case catch char checked class const continue decimal "
-    "default delegate do double else enum event explicit extern false finally fixed float for "
-    "foreach goto if implicit in int interface internal is lock long namespace new null object "
-    "operator out override params private protected public readonly ref return sbyte sealed "
-    "short sizeof stackalloc static string struct switch this throw true try typeof uint ulong "
-    "unchecked unsafe ushort using virtual void volatile while").split(" "))
+_CSHARP_KEYWORDS = frozenset(
+    (  # noqa: SIM905
+        "abstract as base bool break byte case catch char checked class const continue decimal "
+        "default delegate do double else enum event explicit extern false finally fixed float for "
+        "foreach goto if implicit in int interface internal is lock long namespace new null object "
+        "operator out override params private protected public readonly ref return sbyte sealed "
+        "short sizeof stackalloc static string struct switch this throw true try typeof uint ulong "
+        "unchecked unsafe ushort using virtual void volatile while"
+    ).split(" ")
+)
 CSHARP_IDENTIFIER = r"[A-Za-z_][A-Za-z0-9_]*"
 _IDENTIFIER_RE = re.compile(CSHARP_IDENTIFIER)
 _SUFFIX: dict[Direction | Role, str] = {

@@ -80,8 +80,10 @@ def schema_path() -> Path:
     for candidate in (package / "schema" / _FILE, package.parent / "schema" / _FILE):
         if candidate.is_file():
             return candidate
-    raise InternalError(f"{_FILE} is missing from the installation (looked in "
-                        f"{package / 'schema'} and {package.parent / 'schema'})")
+    raise InternalError(
+        f"{_FILE} is missing from the installation (looked in "
+        f"{package / 'schema'} and {package.parent / 'schema'})"
+    )
 
 
 def load_schema() -> dict[str, Any]:

@@ -48,7 +48,6 @@ components:
 """)
 
 
-
 def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
     """A small, valid, commented manifest for a robot on ROS ``ros`` with one ``scene``.
 
@@ -59,7 +58,9 @@ def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
     if ros not in (1, 2):
         raise UserError(f"unknown ROS version ${ros}", hint="choose 1 or 2")
     if not scene.endswith(".unity") or any(c in scene for c in "\n#:\"'"):
-        raise UserError(f"invalid scene path '${scene}'",
-                        hint="give a project-relative .unity file, e.g. Assets/Scenes/Main.unity")
+        raise UserError(
+            f"invalid scene path '${scene}'",
+            hint="give a project-relative .unity file, e.g. Assets/Scenes/Main.unity",
+        )
     modeline = f"# yaml-language-server: $schema={schema}\n" if schema else ""
     return _TEMPLATE.substitute(version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline)

@@ -97,7 +97,8 @@ def _needs_double_quotes(text: str) -> bool:
         return True
     # A multi-line single-quoted scalar loses the spaces around each line break when read.
     return "\n" in text and any(
-        line != line.strip(" ") for line in text.split("\n")[:-1] + text.split("\n")[1:])
+        line != line.strip(" ") for line in text.split("\n")[:-1] + text.split("\n")[1:]
+    )
 
 
 def _plain_allowed(text: str, quote_trailing_bracket: bool) -> bool:

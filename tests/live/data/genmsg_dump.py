@@ -24,21 +24,27 @@ def search_path(roots):
 
 
 def describe(context, spec):
-    return {"type": spec.full_name, "md5sum": gentools.compute_md5(context, spec),
-            "definition": gentools.compute_full_text(context, spec),
-            "typedefs": typedefs(context, spec)}
+    return {
+        "type": spec.full_name,
+        "md5sum": gentools.compute_md5(context, spec),
+        "definition": gentools.compute_full_text(context, spec),
+        "typedefs": typedefs(context, spec),
+    }
 
 
 def typedef(spec):
     """rosapi's TypeDef of one message (constants sorted by name, as rosapi lists them)."""
     fields = spec.parsed_fields()
     constants = sorted(spec.constants, key=lambda c: c.name)
-    return {"type": spec.full_name, "fieldnames": [f.name for f in fields],
-            "fieldtypes": [f.base_type for f in fields],
-            "fieldarraylen": [-1 if not f.is_array else (f.array_len or 0) for f in fields],
-            "examples": ["{}" if not f.is_builtin else "0" for f in fields],
-            "constnames": [c.name for c in constants],
-            "constvalues": [str(c.val) for c in constants]}
+    return {
+        "type": spec.full_name,
+        "fieldnames": [f.name for f in fields],
+        "fieldtypes": [f.base_type for f in fields],
+        "fieldarraylen": [-1 if not f.is_array else (f.array_len or 0) for f in fields],
+        "examples": ["{}" if not f.is_builtin else "0" for f in fields],
+        "constnames": [c.name for c in constants],
+        "constvalues": [str(c.val) for c in constants],
+    }
 
 
 def typedefs(context, spec):
@@ -70,14 +76,19 @@ def main():
         if name.endswith(".srv"):
             name = name[:-4]
             package, short = name.split("/")
-            path = [p for root in args.root + ["/usr/share"]
-                    for p in [os.path.join(root, package, "srv", short + ".srv")]
-                    if os.path.exists(p)][0]
+            path = [
+                p
+                for root in args.root + ["/usr/share"]
+                for p in [os.path.join(root, package, "srv", short + ".srv")]
+                if os.path.exists(p)
+            ][0]
             spec = loader.load_srv_from_file(context, path, name)
             loader.load_depends(context, spec, search)
-            result[name] = {"md5sum": gentools.compute_md5(context, spec),
-                            "request": describe(context, spec.request),
-                            "response": describe(context, spec.response)}
+            result[name] = {
+                "md5sum": gentools.compute_md5(context, spec),
+                "request": describe(context, spec.request),
+                "response": describe(context, spec.response),
+            }
         else:
             spec = loader.load_msg_by_type(context, name, search)
             loader.load_depends(context, spec, search)

@@ -21,13 +21,22 @@ def message_class(definitions, name):
 def service_class(definitions, name):
     entry = definitions[name]
     package, short = name.split("/")
-    request = genpy.dynamic.generate_dynamic(entry["request"]["type"],
-                                             entry["request"]["definition"])
-    response = genpy.dynamic.generate_dynamic(entry["response"]["type"],
-                                              entry["response"]["definition"])
-    return type(short, (object,), {"_type": name, "_md5sum": entry["md5sum"],
-                                   "_request_class": request[entry["request"]["type"]],
-                                   "_response_class": response[entry["response"]["type"]]})
+    request = genpy.dynamic.generate_dynamic(
+        entry["request"]["type"], entry["request"]["definition"]
+    )
+    response = genpy.dynamic.generate_dynamic(
+        entry["response"]["type"], entry["response"]["definition"]
+    )
+    return type(
+        short,
+        (object,),
+        {
+            "_type": name,
+            "_md5sum": entry["md5sum"],
+            "_request_class": request[entry["request"]["type"]],
+            "_response_class": response[entry["response"]["type"]],
+        },
+    )
 
 
 def main(path):
@@ -38,15 +47,18 @@ def main(path):
     imu = message_class(definitions, "sensor_msgs/Imu")
     reading = message_class(definitions, "scaffold_test_msgs/Reading")
     twist = message_class(definitions, "geometry_msgs/Twist")
-    publishers = [rospy.Publisher("/chatter", string, queue_size=1),
-                  rospy.Publisher("/imu", imu, queue_size=1),
-                  rospy.Publisher("/reading", reading, queue_size=1)]
+    publishers = [
+        rospy.Publisher("/chatter", string, queue_size=1),
+        rospy.Publisher("/imu", imu, queue_size=1),
+        rospy.Publisher("/reading", reading, queue_size=1),
+    ]
     rospy.Subscriber("/cmd_vel", twist, lambda message: None)
     trigger = service_class(definitions, "std_srvs/Trigger")
     calibrate = service_class(definitions, "scaffold_test_msgs/Calibrate")
     rospy.Service("/trigger", trigger, lambda request: trigger._response_class(True, "ok"))
-    rospy.Service("/calibrate", calibrate,
-                  lambda request: calibrate._response_class(True, "calibrated"))
+    rospy.Service(
+        "/calibrate", calibrate, lambda request: calibrate._response_class(True, "calibrated")
+    )
     messages = [string(data="hello"), imu(), reading()]
     print("ready", flush=True)
     while not rospy.is_shutdown():

@@ -42,13 +42,22 @@ def list_live_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
         return master.list_master_types(url, timeout=timeout)
     if url.startswith(("ws://", "wss://")):
         return rosbridge.list_rosbridge_types(url, timeout=timeout)
-    raise UserError(f"not a live ROS URL: {url!r}",
-                    hint="use http://HOST:11311 (ROS 1 master) or ws://HOST:9090 (rosbridge)")
+    raise UserError(
+        f"not a live ROS URL: {url!r}",
+        hint="use http://HOST:11311 (ROS 1 master) or ws://HOST:9090 (rosbridge)",
+    )
 
 
-def discover(*, master_url: str | None = None, rosbridge_url: str | None = None,
-             bag: Path | None = None, timeout: float = 2.0, names: NameFilter | None = None,
-             dialect: Dialect | None = None, progress: Progress | None = None) -> Discovery:
+def discover(
+    *,
+    master_url: str | None = None,
+    rosbridge_url: str | None = None,
+    bag: Path | None = None,
+    timeout: float = 2.0,
+    names: NameFilter | None = None,
+    dialect: Dialect | None = None,
+    progress: Progress | None = None,
+) -> Discovery:
     """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``."""
     from unityscaffold.interfaces.live import bag as bags
     from unityscaffold.interfaces.live import master, rosbridge
@@ -58,10 +67,10 @@ def discover(*, master_url: str | None = None, rosbridge_url: str | None = None,
         raise UserError("give exactly one of --master, --rosbridge and --bag")
     names = names or NameFilter()
     if master_url is not None:
-        return master.discover_master(master_url, timeout=timeout, names=names,
-                                      progress=progress)
+        return master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
     if rosbridge_url is not None:
-        return rosbridge.discover_rosbridge(rosbridge_url, timeout=timeout, names=names,
-                                            dialect=dialect, progress=progress)
+        return rosbridge.discover_rosbridge(
+            rosbridge_url, timeout=timeout, names=names, dialect=dialect, progress=progress
+        )
     assert bag is not None
     return bags.discover_bag(Path(bag), names=names)

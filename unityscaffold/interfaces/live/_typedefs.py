@@ -14,9 +14,18 @@ from unityscaffold.errors import UserError
 
 __all__ = ["full_text_from_typedefs"]
 
-_IDL_TO_MSG = {"double": "float64", "float": "float32", "boolean": "bool", "octet": "byte",
-               "long": "int32", "unsigned long": "uint32", "long long": "int64",
-               "unsigned long long": "uint64", "short": "int16", "unsigned short": "uint16"}
+_IDL_TO_MSG = {
+    "double": "float64",
+    "float": "float32",
+    "boolean": "bool",
+    "octet": "byte",
+    "long": "int32",
+    "unsigned long": "uint32",
+    "long long": "int64",
+    "unsigned long long": "uint64",
+    "short": "int16",
+    "unsigned short": "uint16",
+}
 _SEPARATOR = "\n" + "=" * 80 + "\n"
 
 
@@ -37,11 +46,12 @@ def _text(typedef: Mapping[str, Any]) -> str:
     if not (len(names) == len(types) == len(lengths)):
         raise ValueError(f"TypeDef of {typedef.get('type')} has lists of different lengths")
     if _strings(typedef, "constnames"):
-        raise UserError(f"cannot rebuild {typedef.get('type')} from /rosapi/message_details: "
-                        "rosapi does not report the types of its constants",
-                        hint="add the package that defines it to the manifest's interfaces")
-    return "".join(_field_line(t, n, int(a)) for t, n, a in zip(types, names, lengths,
-                                                                 strict=True))
+        raise UserError(
+            f"cannot rebuild {typedef.get('type')} from /rosapi/message_details: "
+            "rosapi does not report the types of its constants",
+            hint="add the package that defines it to the manifest's interfaces",
+        )
+    return "".join(_field_line(t, n, int(a)) for t, n, a in zip(types, names, lengths, strict=True))
 
 
 def _strings(typedef: Mapping[str, Any], key: str) -> list[str]:

@@ -32,8 +32,10 @@ def _reader(path: Path) -> tuple[Dialect, Any]:
         return Dialect.ROS1, Reader1(path)
     if path.suffix in _ROS2_SUFFIXES or (path.is_dir() and (path / "metadata.yaml").is_file()):
         return Dialect.ROS2, Reader2(path)
-    raise UserError(f"{path} is not a bag",
-                    hint="give a ROS 1 .bag file, a ROS 2 .db3 or .mcap file, or a rosbag2 folder")
+    raise UserError(
+        f"{path} is not a bag",
+        hint="give a ROS 1 .bag file, a ROS 2 .db3 or .mcap file, or a rosbag2 folder",
+    )
 
 
 def _connections(path: Path) -> tuple[Dialect, list[Connection]]:
@@ -77,8 +79,10 @@ def discover_bag(path: Path, *, names: NameFilter) -> Discovery:
         topic = _topic(connection, dialect)
         known = topics.setdefault(topic.name, topic)
         if known.type != topic.type:
-            warnings.append(f"{topic.name} was recorded with two types, {known.type} and "
-                            f"{topic.type}; keeping {known.type}")
+            warnings.append(
+                f"{topic.name} was recorded with two types, {known.type} and "
+                f"{topic.type}; keeping {known.type}"
+            )
         elif topic.definition is None:
             warnings.append(f"{topic.name} has no embedded definition of {topic.type}")
     return Discovery(dialect, str(path), tuple(topics.values()), (), tuple(sorted(set(warnings))))

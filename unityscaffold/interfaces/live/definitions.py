@@ -47,24 +47,29 @@ class Definition:
 def _split_name(type_name: str, root: str) -> tuple[str, str]:
     match = _NAME.match(type_name.strip())
     if match is None:
-        raise UserError(f"the definition of {root} names a type {type_name!r}, "
-                        "which is not pkg/Type")
+        raise UserError(
+            f"the definition of {root} names a type {type_name!r}, which is not pkg/Type"
+        )
     return match.group(1), match.group(2)
 
 
 def split_full_text(type_name: str, text: str) -> list[Definition]:
     """The root type and every type it uses, in the order the text lists them."""
     if text.startswith(_IDL_START):
-        raise UserError(f"the definition of {type_name} is in IDL form, which cannot be "
-                        "turned into .msg files", hint="record with the ros2msg definition format")
+        raise UserError(
+            f"the definition of {type_name} is in IDL form, which cannot be turned into .msg files",
+            hint="record with the ros2msg definition format",
+        )
     pieces = _SEPARATOR.split(text)
     package, name = _split_name(type_name, type_name)
     found = [Definition(package, name, pieces[0])]
     for index in range(1, len(pieces), 3):
         form, dependency, body = pieces[index : index + 3]
         if form == "IDL":
-            raise UserError(f"the definition of {type_name} embeds {dependency} in IDL form, "
-                            "which cannot be turned into a .msg file")
+            raise UserError(
+                f"the definition of {type_name} embeds {dependency} in IDL form, "
+                "which cannot be turned into a .msg file"
+            )
         found.append(Definition(*_split_name(dependency, type_name), body))
     return found
 
@@ -72,8 +77,9 @@ def split_full_text(type_name: str, text: str) -> list[Definition]:
 class StagedCache:
     """A verified copy of the cache, waiting to replace it (``commit``) or to go (``discard``)."""
 
-    def __init__(self, target: Path, staging: Path, changed: list[Path],
-                 warnings: list[str]) -> None:
+    def __init__(
+        self, target: Path, staging: Path, changed: list[Path], warnings: list[str]
+    ) -> None:
         self.target, self.staging = target, staging
         self.changed = changed
         self.warnings = warnings
@@ -121,8 +127,9 @@ def _write(staging: Path, definitions: Sequence[Definition], cache: Path) -> lis
     return changed
 
 
-def stage_definitions(discovery: Discovery, cache: Path, *,
-                      search_paths: Sequence[Path] = ()) -> StagedCache:
+def stage_definitions(
+    discovery: Discovery, cache: Path, *, search_paths: Sequence[Path] = ()
+) -> StagedCache:
     """Write the discovered definitions over a copy of ``cache`` and verify them.
 
     Raises ``UserError`` naming the type when a reconstruction does not parse or its md5sum
@@ -153,12 +160,15 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
         registry = own if reconstructed else wider
         spec = _lookup(registry, item.type, discovery.source)
         if spec is None:
-            warnings.append(f"no definition of {item.type} (used by {item.name}): add the folder "
-                            "with its package to the manifest's interfaces")
+            warnings.append(
+                f"no definition of {item.type} (used by {item.name}): add the folder "
+                "with its package to the manifest's interfaces"
+            )
             continue
         if discovery.dialect is Dialect.ROS1 and item.md5:
-            _check_md5(registry, spec, item.md5, item.name, discovery.source,
-                       reconstructed=reconstructed)
+            _check_md5(
+                registry, spec, item.md5, item.name, discovery.source, reconstructed=reconstructed
+            )
     return warnings
 
 
@@ -167,25 +177,42 @@ def _lookup(registry: Registry, type_name: str, source: str) -> MessageSpec | Se
         found = registry.find(type_name)
     except LocatedError as error:
         first = error.diagnostics[0]
-        raise UserError(f"the definition of {type_name} reported by {source} does not parse: "
-                        f"line {first.location.line}: {first.message}") from None
+        raise UserError(
+            f"the definition of {type_name} reported by {source} does not parse: "
+            f"line {first.location.line}: {first.message}"
+        ) from None
     return found if isinstance(found, MessageSpec | ServiceSpec) else None
 
 
-def _check_md5(registry: Registry, spec: MessageSpec | ServiceSpec, reported: str, name: str,
-               source: str, *, reconstructed: bool) -> None:
+def _check_md5(
+    registry: Registry,
+    spec: MessageSpec | ServiceSpec,
+    reported: str,
+    name: str,
+    source: str,
+    *,
+    reconstructed: bool,
+) -> None:
     try:
         computed = Ros1Identity(registry).md5sum(spec)
     except UserError as error:
-        raise UserError(f"the definition of {spec.full_name} (used by {name}) is incomplete: "
-                        f"{error.message}") from None
+        raise UserError(
+            f"the definition of {spec.full_name} (used by {name}) is incomplete: {error.message}"
+        ) from None
     if computed == reported:
         return
     if reconstructed:
-        hint = (f"the definition {source} sent for {spec.full_name} does not match its own "
-                "md5sum; the publisher may have been built from other .msg files than it runs")
+        hint = (
+            f"the definition {source} sent for {spec.full_name} does not match its own "
+            "md5sum; the publisher may have been built from other .msg files than it runs"
+        )
     else:
-        hint = (f"the system runs a different version of {spec.full_name} than "
-                f"{spec.source or 'the local definition'}")
-    raise UserError(f"md5sum mismatch for {spec.full_name} (used by {name}): {source} reported "
-                    f"{reported}, the definition gives {computed}", hint=hint)
+        hint = (
+            f"the system runs a different version of {spec.full_name} than "
+            f"{spec.source or 'the local definition'}"
+        )
+    raise UserError(
+        f"md5sum mismatch for {spec.full_name} (used by {name}): {source} reported "
+        f"{reported}, the definition gives {computed}",
+        hint=hint,
+    )

@@ -71,8 +71,9 @@ class _Api:
         except ConnectionRefusedError:
             raise UserError(f"no {self.who} at {self.url} (connection refused)") from None
         except TimeoutError:
-            raise UserError(f"{self.who} at {self.url} did not answer {method} within "
-                            f"{self.timeout:g} s") from None
+            raise UserError(
+                f"{self.who} at {self.url} did not answer {method} within {self.timeout:g} s"
+            ) from None
         except socket.gaierror as exc:
             raise UserError(f"no {self.who} at {self.url} (unknown host: {exc.strerror})") from None
         except (xmlrpc.client.Error, http.client.HTTPException, ValueError) as exc:
@@ -96,8 +97,12 @@ def check_url(url: str) -> None:
 def _graph(master: _Api) -> _Graph:
     types = {name: kind for name, kind in master.call("getTopicTypes")}
     publishers, subscribers, services = master.call("getSystemState")
-    return _Graph(types, dict(map(tuple, publishers)), dict(map(tuple, subscribers)),
-                  dict(map(tuple, services)))
+    return _Graph(
+        types,
+        dict(map(tuple, publishers)),
+        dict(map(tuple, subscribers)),
+        dict(map(tuple, services)),
+    )
 
 
 def list_master_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
@@ -108,25 +113,30 @@ def list_master_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
     return sorted((name, graph.types.get(name, "")) for name in active)
 
 
-def discover_master(url: str, *, timeout: float, names: NameFilter,
-                    progress: Progress | None = None) -> Discovery:
+def discover_master(
+    url: str, *, timeout: float, names: NameFilter, progress: Progress | None = None
+) -> Discovery:
     """Topics (with definitions from their publishers) and services of a running ROS 1 system."""
     check_url(url)
     master = _Api(url, timeout, "ROS master")
     graph = _graph(master)
-    topic_names = sorted(n for n in graph.publishers.keys() | graph.subscribers.keys()
-                         if names.accepts(n))
+    topic_names = sorted(
+        n for n in graph.publishers.keys() | graph.subscribers.keys() if names.accepts(n)
+    )
     service_names = sorted(n for n in graph.services if names.accepts(n))
-    jobs = {**{("topic", n): _topic_job(master, graph, n) for n in topic_names},
-            **{("service", n): _service_job(master, n) for n in service_names}}
+    jobs = {
+        **{("topic", n): _topic_job(master, graph, n) for n in topic_names},
+        **{("service", n): _service_job(master, n) for n in service_names},
+    }
     results, warnings = _run(jobs, progress)
     topics = [r for r in results if isinstance(r, DiscoveredTopic)]
     services = [r for r in results if isinstance(r, DiscoveredService)]
     return Discovery(Dialect.ROS1, url, tuple(topics), tuple(services), tuple(sorted(warnings)))
 
 
-def _run(jobs: dict[tuple[str, str], Any], progress: Progress | None
-         ) -> tuple[list[DiscoveredTopic | DiscoveredService], list[str]]:
+def _run(
+    jobs: dict[tuple[str, str], Any], progress: Progress | None
+) -> tuple[list[DiscoveredTopic | DiscoveredService], list[str]]:
     results: list[DiscoveredTopic | DiscoveredService] = []
     warnings: list[str] = []
     # A topic or service whose type nobody could tell is left out, with a warning.
@@ -155,13 +165,19 @@ def _topic_job(master: _Api, graph: _Graph, topic: str) -> Any:
             except UserError as error:
                 problems.append(error.message)
                 continue
-            return DiscoveredTopic(topic, header.get("type") or found.type, direction,
-                                   header.get("md5sum"), header.get("message_definition")), None
+            return DiscoveredTopic(
+                topic,
+                header.get("type") or found.type,
+                direction,
+                header.get("md5sum"),
+                header.get("message_definition"),
+            ), None
         if not found.type:
             return found, f"skipped {topic}: the master does not know its type"
         if problems:
             return found, f"skipped the definition of {topic}: " + "; ".join(problems)
         return found, None
+
     return probe
 
 
@@ -172,9 +188,13 @@ def _probe_publisher(master: _Api, node: str, topic: str) -> dict[str, str]:
     if not (isinstance(protocol, list) and len(protocol) == 3 and protocol[0] == "TCPROS"):
         raise UserError(f"node {node} offered no TCPROS connection for {topic}")
     _, host, port = protocol
-    return tcpros.exchange(host, int(port),
-                           {"callerid": CALLER_ID, "topic": topic, "md5sum": "*", "type": "*"},
-                           timeout=master.timeout, peer=f"publisher {node} of {topic}")
+    return tcpros.exchange(
+        host,
+        int(port),
+        {"callerid": CALLER_ID, "topic": topic, "md5sum": "*", "type": "*"},
+        timeout=master.timeout,
+        peer=f"publisher {node} of {topic}",
+    )
 
 
 def _service_job(master: _Api, service: str) -> Any:
@@ -184,11 +204,15 @@ def _service_job(master: _Api, service: str) -> Any:
             parsed = urllib.parse.urlsplit(uri)
             if parsed.scheme != "rosrpc" or not parsed.hostname or not parsed.port:
                 raise UserError(f"the master gave {service} the address {uri!r}, not rosrpc://")
-            header = tcpros.exchange(parsed.hostname, parsed.port,
-                                     {"callerid": CALLER_ID, "service": service, "md5sum": "*",
-                                      "probe": "1"},
-                                     timeout=master.timeout, peer=f"provider of {service}")
+            header = tcpros.exchange(
+                parsed.hostname,
+                parsed.port,
+                {"callerid": CALLER_ID, "service": service, "md5sum": "*", "probe": "1"},
+                timeout=master.timeout,
+                peer=f"provider of {service}",
+            )
         except UserError as error:
             return None, f"skipped service {service}: {error.message}"
         return DiscoveredService(service, header.get("type", ""), header.get("md5sum")), None
+
     return probe

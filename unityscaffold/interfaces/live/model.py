@@ -63,8 +63,13 @@ class DiscoveredTopic:
     definition: str | None = None
 
     def to_json(self) -> dict[str, Any]:
-        return {"name": self.name, "type": self.type, "direction": self.direction.value,
-                "md5sum": self.md5, "definition": self.definition}
+        return {
+            "name": self.name,
+            "type": self.type,
+            "direction": self.direction.value,
+            "md5sum": self.md5,
+            "definition": self.definition,
+        }
 
 
 @dataclass(frozen=True, slots=True)
@@ -77,8 +82,12 @@ class DiscoveredService:
     definition: str | None = None
 
     def to_json(self) -> dict[str, Any]:
-        return {"name": self.name, "type": self.type, "md5sum": self.md5,
-                "definition": self.definition}
+        return {
+            "name": self.name,
+            "type": self.type,
+            "md5sum": self.md5,
+            "definition": self.definition,
+        }
 
 
 @dataclass(frozen=True, slots=True)
@@ -117,8 +126,9 @@ class NameFilter:
     include_system: bool = False
 
     @classmethod
-    def of(cls, select: str | None = None, exclude: str | None = None, *,
-           include_system: bool = False) -> NameFilter:
+    def of(
+        cls, select: str | None = None, exclude: str | None = None, *, include_system: bool = False
+    ) -> NameFilter:
         return cls(_compile(select, "--select"), _compile(exclude, "--exclude"), include_system)
 
     def accepts(self, name: str) -> bool:

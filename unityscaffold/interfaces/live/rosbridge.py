@@ -52,21 +52,32 @@ class RosbridgeClient:
         try:
             # Entered as a context manager: websockets 16+ deprecates bare connect().
             self._socket = self._stack.enter_context(
-                connect(self.url, open_timeout=self.timeout, close_timeout=self.timeout,
-                        max_size=64 * 1024 * 1024))
+                connect(
+                    self.url,
+                    open_timeout=self.timeout,
+                    close_timeout=self.timeout,
+                    max_size=64 * 1024 * 1024,
+                )
+            )
         except ConnectionRefusedError:
             raise UserError(f"no rosbridge at {self.url} (connection refused)") from None
         except TimeoutError:
-            raise UserError(f"rosbridge at {self.url} did not accept a WebSocket connection "
-                            f"within {self.timeout:g} s") from None
+            raise UserError(
+                f"rosbridge at {self.url} did not accept a WebSocket connection "
+                f"within {self.timeout:g} s"
+            ) from None
         except (InvalidHandshake, InvalidURI) as exc:
             raise UserError(f"{self.url} is not a rosbridge WebSocket: {exc}") from None
         except OSError as exc:
             raise UserError(f"no rosbridge at {self.url} ({exc.strerror or exc})") from None
         return self
 
-    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
-                 trace: TracebackType | None) -> None:
+    def __exit__(
+        self,
+        kind: type[BaseException] | None,
+        error: BaseException | None,
+        trace: TracebackType | None,
+    ) -> None:
         self._stack.close()
 
     def call(self, service: str, args: dict[str, Any] | None = None) -> dict[str, Any]:
@@ -83,16 +94,18 @@ class RosbridgeClient:
                 if values is not None:
                     return values
         except ConnectionClosed:
-            raise UserError(f"rosbridge at {self.url} closed the connection while "
-                            f"{service} was pending") from None
+            raise UserError(
+                f"rosbridge at {self.url} closed the connection while {service} was pending"
+            ) from None
 
     def _receive(self, service: str, deadline: float) -> dict[str, Any]:
         assert self._socket is not None
         try:
             raw = self._socket.recv(timeout=max(0.0, deadline - time.monotonic()))
         except TimeoutError:
-            raise UserError(f"rosbridge at {self.url} did not answer {service} within "
-                            f"{self.timeout:g} s") from None
+            raise UserError(
+                f"rosbridge at {self.url} did not answer {service} within {self.timeout:g} s"
+            ) from None
         try:
             reply = json.loads(raw)
         except (ValueError, TypeError):
@@ -103,10 +116,15 @@ class RosbridgeClient:
 
     def _answer(self, reply: dict[str, Any], call_id: str, service: str) -> dict[str, Any] | None:
         """The values if ``reply`` answers this call; ``None`` for unrelated traffic."""
-        if reply.get("op") == "status" and reply.get("level") == "error" \
-                and reply.get("id") in (None, call_id):
-            raise UserError(f"rosbridge at {self.url} reported an error for {service}: "
-                            f"{reply.get('msg', '(no message)')}")
+        if (
+            reply.get("op") == "status"
+            and reply.get("level") == "error"
+            and reply.get("id") in (None, call_id)
+        ):
+            raise UserError(
+                f"rosbridge at {self.url} reported an error for {service}: "
+                f"{reply.get('msg', '(no message)')}"
+            )
         if reply.get("op") != "service_response" or reply.get("id") != call_id:
             return None
         values = reply.get("values")
@@ -146,9 +164,14 @@ def list_rosbridge_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
     return sorted(zip(topics, types, strict=True))
 
 
-def discover_rosbridge(url: str, *, timeout: float, names: NameFilter,
-                       dialect: Dialect | None = None,
-                       progress: Progress | None = None) -> Discovery:
+def discover_rosbridge(
+    url: str,
+    *,
+    timeout: float,
+    names: NameFilter,
+    dialect: Dialect | None = None,
+    progress: Progress | None = None,
+) -> Discovery:
     """Topics with full definitions and services, as the bridge's rosapi reports them."""
     with RosbridgeClient(url, timeout=timeout) as client:
         raw = _raw_topics(client)
@@ -176,15 +199,21 @@ def discover_rosbridge(url: str, *, timeout: float, names: NameFilter,
             services.append(_service(client, name))
             if progress is not None:
                 progress(done, total, name)
-    return Discovery(found_dialect, url, tuple(topics), tuple(s for s in services if s.type),
-                     tuple(sorted(set(warnings))))
+    return Discovery(
+        found_dialect,
+        url,
+        tuple(topics),
+        tuple(s for s in services if s.type),
+        tuple(sorted(set(warnings))),
+    )
 
 
 def _raw_topics(client: RosbridgeClient) -> list[tuple[str, str, str]]:
     service = "/rosapi/topics_and_raw_types"
     values = client.call(service)
-    lists = [_strings(client, values, key, service)
-             for key in ("topics", "types", "typedefs_full_text")]
+    lists = [
+        _strings(client, values, key, service) for key in ("topics", "types", "typedefs_full_text")
+    ]
     if len({len(item) for item in lists}) != 1:
         raise client.malformed(service, "topics, types and typedefs_full_text differ in length")
     return list(zip(*lists, strict=True))
@@ -196,12 +225,14 @@ def _service_names(client: RosbridgeClient) -> list[str]:
 
 
 def _direction(client: RosbridgeClient, name: str) -> Direction:
-    return Direction.from_graph(bool(_nodes(client, "publishers", name)),
-                                bool(_nodes(client, "subscribers", name)))
+    return Direction.from_graph(
+        bool(_nodes(client, "publishers", name)), bool(_nodes(client, "subscribers", name))
+    )
 
 
-def _topic(client: RosbridgeClient, name: str, kind: str, text: str, direction: Direction
-           ) -> tuple[DiscoveredTopic, list[str]]:
+def _topic(
+    client: RosbridgeClient, name: str, kind: str, text: str, direction: Direction
+) -> tuple[DiscoveredTopic, list[str]]:
     warnings: list[str] = []
     if not text.strip():
         try:

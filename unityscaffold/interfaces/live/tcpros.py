@@ -26,8 +26,10 @@ class MalformedHeader(ValueError):
 
 
 def encode_header(fields: Mapping[str, str]) -> bytes:
-    body = b"".join(_U32.pack(len(item)) + item
-                    for item in (f"{key}={value}".encode() for key, value in fields.items()))
+    body = b"".join(
+        _U32.pack(len(item)) + item
+        for item in (f"{key}={value}".encode() for key, value in fields.items())
+    )
     return _U32.pack(len(body)) + body
 
 
@@ -41,8 +43,9 @@ def decode_header(body: bytes) -> dict[str, str]:
         (size,) = _U32.unpack_from(body, offset)
         offset += 4
         if offset + size > len(body):
-            raise MalformedHeader(f"field at byte {offset} claims {size} bytes, "
-                                  f"{len(body) - offset} remain")
+            raise MalformedHeader(
+                f"field at byte {offset} claims {size} bytes, {len(body) - offset} remain"
+            )
         item = body[offset : offset + size]
         offset += size
         key, equals, value = item.partition(b"=")
@@ -55,8 +58,9 @@ def decode_header(body: bytes) -> dict[str, str]:
     return fields
 
 
-def exchange(host: str, port: int, fields: Mapping[str, str], *, timeout: float,
-             peer: str) -> dict[str, str]:
+def exchange(
+    host: str, port: int, fields: Mapping[str, str], *, timeout: float, peer: str
+) -> dict[str, str]:
     """Send ``fields`` to ``host:port`` and return the reply header; ``peer`` names the node
     in errors, e.g. "publisher of /imu"."""
     try:
@@ -65,8 +69,9 @@ def exchange(host: str, port: int, fields: Mapping[str, str], *, timeout: float,
             sock.sendall(encode_header(fields))
             (size,) = _U32.unpack(_read_exactly(sock, 4, peer))
             if size > MAX_HEADER:
-                raise UserError(f"{peer} at {host}:{port} sent a {size}-byte header; "
-                                "that is not TCPROS")
+                raise UserError(
+                    f"{peer} at {host}:{port} sent a {size}-byte header; that is not TCPROS"
+                )
             reply = decode_header(_read_exactly(sock, size, peer))
     except ConnectionRefusedError:
         raise UserError(f"{peer} refused the connection ({host}:{port})") from None
