@@ -16,7 +16,7 @@ IN_CI = os.environ.get("CI", "").lower() == "true"
 
 
 def require(available: object, what: str) -> None:
-    """Skip (locally) or fail (in CI, where .ci/run must have installed it) when ``what`` is missing."""
+    """Skip (locally) or fail (in CI, where .ci/run must install it) when ``what`` is missing."""
     if available:
         return
     if IN_CI:

@@ -8,7 +8,6 @@ from pathlib import Path
 from csharp import compile_applied_project
 from helpers import run_cli
 
-
 REPO = Path(__file__).resolve().parents[2]
 
 
@@ -26,7 +25,8 @@ connector: {gameobject: Ros/Connector, url: "ws://10.0.0.2:9090", serializer: ne
 topics:
   - {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, rate: 30, gameobject: Robot}
   - {name: /joint_states, type: sensor_msgs/JointState, direction: subscribe, gameobject: Robot/Arm}
-  - {name: /arm/status, type: arm_msgs/ArmStatus, direction: subscribe, throttle: 50, gameobject: Robot/Arm}
+  - {name: /arm/status, type: arm_msgs/ArmStatus, direction: subscribe, throttle: 50,
+     gameobject: Robot/Arm}
 services:
   - {name: /arm/home, type: arm_msgs/Home, role: server, gameobject: Robot/Arm}
   - {name: /trigger, type: std_srvs/Trigger, role: client}

@@ -20,7 +20,8 @@ project: .
 scene: Assets/Scenes/{scene}
 connector: {{gameobject: {connector}, url: "ws://localhost:9090"}}
 topics:
-  - {{name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, rate: 10, gameobject: {connector}}}
+  - {{name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, rate: 10,
+     gameobject: {connector}}}
   - {{name: /odom, type: nav_msgs/Odometry, direction: subscribe, gameobject: Robot/base_link}}
 """
 

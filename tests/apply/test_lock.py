@@ -1,4 +1,4 @@
-"""The lock file: deterministic JSON, read back to the same content, refusing what it cannot read."""
+"""The lock file: deterministic JSON, read back unchanged, refusing what it cannot read."""
 
 from __future__ import annotations
 
@@ -50,12 +50,13 @@ def test_an_unreadable_lock_is_a_user_error(tmp_path, text):
         '"files": {"../../victim.txt": "x"}, "user_files": {}, "components": []',
         '"files": {"/tmp/victim.txt": "x"}, "user_files": {}, "components": []',
         '"files": {"Assets/../../victim.txt": "x"}, "user_files": {}, "components": []',
-        '"files": {"ProjectSettings/ProjectSettings.asset": "x"}, "user_files": {}, "components": []',
+        '"files": {"ProjectSettings/ProjectSettings.asset": "x"}, "user_files": {}, '
+        '"components": []',
         '"files": {"Assets/a.cs": 1}, "user_files": {}, "components": []',
-        '"files": {}, "user_files": {}, "components": [{"scene": "../evil.unity", "gameobject": "A", '
-        '"script": "g"}]',
-        '"files": {}, "user_files": {}, "components": [{"scene": "Assets/S.unity", "gameobject": 1, '
-        '"script": "g"}]',
+        '"files": {}, "user_files": {}, '
+        '"components": [{"scene": "../evil.unity", "gameobject": "A", "script": "g"}]',
+        '"files": {}, "user_files": {}, '
+        '"components": [{"scene": "Assets/S.unity", "gameobject": 1, "script": "g"}]',
     ],
 )
 def test_a_lock_pointing_outside_the_assets_folder_is_refused(tmp_path, entry):

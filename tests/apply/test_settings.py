@@ -7,7 +7,10 @@ import pytest
 from unityscaffold.apply.settings import with_ros_define
 
 EMPTY = "PlayerSettings:\n  productName: x\n  scriptingDefineSymbols: {}\n  other: 1\n"
-GROUPS = "PlayerSettings:\n  scriptingDefineSymbols:\n    Standalone: FOO;ROS2\n    Android: BAR\n  other: 1\n"
+GROUPS = (
+    "PlayerSettings:\n  scriptingDefineSymbols:\n    Standalone: FOO;ROS2\n    Android: BAR\n"
+    "  other: 1\n"
+)
 
 
 def test_ros2_adds_the_define_to_an_empty_block_and_ros1_restores_it():

@@ -12,7 +12,9 @@ from helpers import build_tree, run_cli
 
 CUSTOM = {
     "ws/src/my_robot_msgs/package.xml": "<package><name>my_robot_msgs</name></package>",
-    "ws/src/my_robot_msgs/msg/Status.msg": "# Robot status.\nuint8 OK=0\nHeader header\nfloat32 battery  # volts\n",
+    "ws/src/my_robot_msgs/msg/Status.msg": (
+        "# Robot status.\nuint8 OK=0\nHeader header\nfloat32 battery  # volts\n"
+    ),
     "ws/src/my_robot_msgs/srv/Reset.srv": "bool hard\n---\nbool success\n",
 }
 

@@ -9,7 +9,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
 from csharp import MCS_FLAGS, Compiled, compile_cs  # noqa: F401 (re-exported to tests)
 
 from unityscaffold.codegen import Generation, Options, generate

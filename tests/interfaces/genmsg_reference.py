@@ -26,7 +26,7 @@ def main(root):
     result = {}
     for package in packages:
         for path in sorted(glob.glob(os.path.join(root, package, "msg", "*.msg"))):
-            name = "%s/%s" % (package, os.path.basename(path)[:-4])
+            name = f"{package}/{os.path.basename(path)[:-4]}"
             spec = loader.load_msg_by_type(context, name, search)
             loader.load_depends(context, spec, search)
             result[name] = {
@@ -34,7 +34,7 @@ def main(root):
                 "definition": gentools.compute_full_text(context, spec),
             }
         for path in sorted(glob.glob(os.path.join(root, package, "srv", "*.srv"))):
-            name = "%s/%s" % (package, os.path.basename(path)[:-4])
+            name = f"{package}/{os.path.basename(path)[:-4]}"
             spec = loader.load_srv_from_file(context, path, name)
             loader.load_depends(context, spec, search)
             halves = {}

@@ -1,4 +1,4 @@
-"""Every ROS 1 msg and srv Debian ships: md5sum and full text equal genmsg's, computed by genmsg now."""
+"""Every ROS 1 msg and srv Debian ships: md5sum and full text equal what genmsg computes now."""
 
 from __future__ import annotations
 
@@ -99,7 +99,7 @@ def test_known_md5sums_from_the_builtin_definitions(name, md5):
 
 
 def test_action_messages_equal_the_files_debian_generated(ros1_share):
-    """genaction's seven texts, rebuilt from the .action file, are byte-identical to Debian's .msg files."""
+    """genaction's seven texts, rebuilt from the .action file, equal Debian's .msg files."""
     registry = Registry.load(
         Dialect.ROS1,
         [

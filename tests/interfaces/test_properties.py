@@ -1,4 +1,4 @@
-"""Property tests: generated valid definitions parse to what was written; junk never escapes as a crash."""
+"""Property tests: valid definitions parse to what was written; junk never escapes as a crash."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Every Jazzy interface: our parse equals rosidl_adapter's, and our type hashes equal the shipped JSON."""
+"""Every Jazzy interface: parsed as rosidl_adapter does, type hashes equal to the shipped JSON."""
 
 from __future__ import annotations
 

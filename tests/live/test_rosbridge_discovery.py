@@ -101,7 +101,8 @@ def test_unknown_directions_are_a_warning_not_an_error(bridge: FakeRosbridge) ->
         (
             "/rosapi/topics_and_raw_types",
             "drop",
-            "rosbridge at {url} closed the connection while /rosapi/topics_and_raw_types was pending",
+            "rosbridge at {url} closed the connection while "
+            "/rosapi/topics_and_raw_types was pending",
         ),
         (
             "/rosapi/topics_and_raw_types",

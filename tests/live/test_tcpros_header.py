@@ -110,5 +110,5 @@ def test_a_silent_peer_times_out() -> None:
     with socket.socket() as silent:
         silent.bind(("127.0.0.1", 0))
         silent.listen(1)
-        with pytest.raises(UserError, match="did not answer within 0.3 s"):
+        with pytest.raises(UserError, match=r"did not answer within 0\.3 s"):
             exchange("127.0.0.1", silent.getsockname()[1], {}, timeout=0.3, peer="node /x")

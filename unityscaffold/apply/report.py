@@ -16,10 +16,11 @@ def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
     for change in plan.changes:
         counts[change.action] += 1
     m = plan.manifest
+    unchanged = counts[Action.UNCHANGED] + counts[Action.SKIP]
     lines = [
         f"{m.path.name}: Unity project {m.project_root} (ROS {int(m.ros)})",
         f"files: {counts[Action.CREATE]} to create, {counts[Action.UPDATE]} to update, "
-        f"{len(plan.deletions)} to remove, {counts[Action.UNCHANGED] + counts[Action.SKIP]} unchanged",
+        f"{len(plan.deletions)} to remove, {unchanged} unchanged",
     ]
     if verbose:
         for change in plan.changes:

@@ -31,14 +31,14 @@ params private protected public readonly ref return sbyte sealed short sizeof st
 string struct switch this throw true try typeof uint ulong unchecked unsafe ushort using virtual
 void volatile while
 """.split()
-)  # noqa: SIM905
+)
 _CONTEXTUAL = frozenset(
     """
 add alias and ascending args async await by descending dynamic equals file from get global group
 init into join let managed nameof nint not notnull nuint on or orderby partial record remove
 required scoped select set unmanaged value var when where with yield
 """.split()
-)  # noqa: SIM905
+)
 CSHARP_KEYWORDS: frozenset[str] = _RESERVED | _CONTEXTUAL
 """Reserved and contextual C# keywords; a ROS name on this list gets an ``@`` prefix."""
 

@@ -1,4 +1,4 @@
-"""ROS 2 type identity: the RIHS01 type hash (REP 2011), as rosidl_generator_type_description computes it.
+"""ROS 2 type identity: the RIHS01 type hash of REP 2011, as rosidl computes it.
 
 The hash is the sha256 of a JSON text: the type's description (name, and each field's name and
 type as ``type_id``/``capacity``/``string_capacity``/``nested_type_name``) followed by the

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
-from typing import ClassVar, Union
+from typing import ClassVar, TypeAlias
 
 from unityscaffold.errors import SourceLocation
 
@@ -92,8 +92,8 @@ ROS2_PRIMITIVES: tuple[str, ...] = (
     "wstring",
 )
 
-Scalar = Union[bool, int, float, str]
-Value = Union[Scalar, tuple[Scalar, ...]]
+Scalar: TypeAlias = bool | int | float | str
+Value: TypeAlias = Scalar | tuple[Scalar, ...]
 
 
 @dataclass(frozen=True, slots=True)
@@ -291,4 +291,4 @@ class ActionSpec(_Named):
         return (self.goal, self.result, self.feedback, *self.derived, *nested)
 
 
-Interface = Union[MessageSpec, ServiceSpec, ActionSpec]
+Interface: TypeAlias = MessageSpec | ServiceSpec | ActionSpec

@@ -1,4 +1,4 @@
-"""The ROS 1 dialect: ``.msg``, ``.srv`` and ``.action`` files exactly as genmsg and genaction read them.
+"""The ROS 1 dialect: ``.msg``, ``.srv`` and ``.action`` files exactly as genmsg and genaction read.
 
 genmsg's rules, some of them surprising, are kept on purpose because they decide md5sums:
 comments are cut at the first ``#``; tokens are split on spaces only (a tab between type and

@@ -9,6 +9,7 @@ writes them). A topic or service already listed, under any type, is never added 
 from __future__ import annotations
 
 import io
+import itertools
 import os
 import re
 import tempfile
@@ -78,7 +79,7 @@ def _indentation(text: str) -> tuple[int, int, int]:
         line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")
     ]
     seen_mapping = seen_sequence = False
-    for previous, line in zip(lines, lines[1:]):
+    for previous, line in itertools.pairwise(lines):
         parent = _KEY_ONLY.match(previous)
         if parent is None:
             continue

@@ -258,7 +258,7 @@ class Manifest:
 # The reserved C# keywords (codegen.naming keeps the same list plus the contextual ones, which
 # are legal class names); a class named after one would not compile.
 _CSHARP_KEYWORDS = frozenset(
-    (  # noqa: SIM905
+    (
         "abstract as base bool break byte case catch char checked class const continue decimal "
         "default delegate do double else enum event explicit extern false finally fixed float for "
         "foreach goto if implicit in int interface internal is lock long namespace new null object "

@@ -282,7 +282,8 @@ class SceneDocument:
         shown = ", ".join(repr(n) for n in existing[:30]) or "none"
         return UserError(
             f"{self.path}: no GameObject named '{names[level]}' {where}; names there: {shown}",
-            hint="ask for it to be created: `scene attach --create`, or `create: true` in the manifest",
+            hint="ask for it to be created: `scene attach --create`, "
+            "or `create: true` in the manifest",
         )
 
     def _insert(self, doc: Doc, index: int | None = None) -> None:

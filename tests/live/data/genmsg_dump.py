@@ -17,7 +17,7 @@ from genmsg import gentools
 
 def search_path(roots):
     found = {}
-    for root in roots + ["/usr/share"]:
+    for root in [*roots, "/usr/share"]:
         for folder in sorted(glob.glob(os.path.join(root, "*", "msg"))):
             found.setdefault(os.path.basename(os.path.dirname(folder)), []).append(folder)
     return found
@@ -76,12 +76,12 @@ def main():
         if name.endswith(".srv"):
             name = name[:-4]
             package, short = name.split("/")
-            path = [
+            path = next(
                 p
-                for root in args.root + ["/usr/share"]
+                for root in [*args.root, "/usr/share"]
                 for p in [os.path.join(root, package, "srv", short + ".srv")]
                 if os.path.exists(p)
-            ][0]
+            )
             spec = loader.load_srv_from_file(context, path, name)
             loader.load_depends(context, spec, search)
             result[name] = {

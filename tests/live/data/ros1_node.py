@@ -20,7 +20,7 @@ def message_class(definitions, name):
 
 def service_class(definitions, name):
     entry = definitions[name]
-    package, short = name.split("/")
+    _package, short = name.split("/")
     request = genpy.dynamic.generate_dynamic(
         entry["request"]["type"], entry["request"]["definition"]
     )
@@ -62,7 +62,7 @@ def main(path):
     messages = [string(data="hello"), imu(), reading()]
     print("ready", flush=True)
     while not rospy.is_shutdown():
-        for publisher, message in zip(publishers, messages):
+        for publisher, message in zip(publishers, messages, strict=True):
             publisher.publish(message)
         rospy.sleep(0.2)
 
