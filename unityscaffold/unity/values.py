@@ -114,10 +114,6 @@ class ScriptRef:
         file_id = script_file_id_for_dll_class(namespace, class_name)
         return cls(dll_guid, file_id, 3, class_name, namespace, assembly)
 
-    @property
-    def as_asset_ref(self) -> AssetRef:
-        return AssetRef(self.file_id, self.guid, self.type)
-
 
 def script_file_id_for_dll_class(namespace: str, class_name: str) -> int:
     """Unity's fileID for a MonoBehaviour class inside a DLL.
