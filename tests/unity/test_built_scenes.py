@@ -14,7 +14,7 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "unity"
 Check = Callable[[SceneDocument], None]
 SCRIPT = ScriptRef("ff98778ae051cfd40a6e4effdf851ebd")
 
-# Written by hand after reference/unity-yaml.md §1.2-1.3 (5.5-2018.2 layout): no real file of
+# Written by hand after docs/unity-yaml.md#eras (5.5-2018.2 layout): no real file of
 # that generation is in the corpus, so this pins the legacy templates.
 LEGACY = """%YAML 1.1
 %TAG !u! tag:unity3d.com,2011:

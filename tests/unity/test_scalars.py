@@ -16,7 +16,7 @@ from unityscaffold.unity._emit import emit_field, value_equals
 from unityscaffold.unity.scalars import format_float, format_string, to_float32
 from unityscaffold.unity.values import AssetRef, Enum, InlineMap, ObjectRef
 
-# Written by Unity itself (reference/unity-yaml.md §1.7 and the corpus).
+# Written by Unity itself (docs/unity-yaml.md#scalars and the corpus).
 UNITY_FLOATS = [
     (0.5, "0.5"),
     (0.95686275, "0.95686275"),

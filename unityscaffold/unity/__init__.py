@@ -1,7 +1,7 @@
 """unity stage: Unity scenes, prefabs and ``.meta`` files, edited surgically as text.
 
 ``SceneDocument`` loads a text scene or prefab byte-exactly, indexes its hierarchy, and attaches
-or updates MonoBehaviours idempotently (see ``reference/unity-yaml.md``). ``meta`` writes and
+or updates MonoBehaviours idempotently (see ``docs/unity-yaml.md``). ``meta`` writes and
 reads ``.meta`` files, ``project`` finds a project's root, salt and script GUIDs, and
 ``atomic.write_if_changed`` is the one way files get written.
 """

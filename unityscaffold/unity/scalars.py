@@ -1,6 +1,6 @@
 """Scalars exactly as Unity writes them: float32 digits, integers, and string quoting/folding.
 
-See ``reference/unity-yaml.md`` §1.7. Everything here is a pure function of the value (plus,
+See ``docs/unity-yaml.md#scalars``. Everything here is a pure function of the value (plus,
 for strings, the column where the scalar starts), so it can be property-tested against a YAML
 reader.
 """
