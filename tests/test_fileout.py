@@ -1,17 +1,22 @@
-"""``apply.files``: compare before writing, create-only metas, all-or-nothing writes.
-
-(Kept here with the generator's tests, its first user.)
-"""
+"""``unityscaffold.fileout``: compare before writing, create-only metas, all-or-nothing writes,
+and the single-file ``write_if_changed`` on the same path."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
 
-from unityscaffold.apply import files
-from unityscaffold.apply.files import Action, DesiredFile, plan_files, write_files
+from unityscaffold import fileout
 from unityscaffold.errors import UserError
+from unityscaffold.fileout import (
+    ChangeKind,
+    DesiredFile,
+    plan_files,
+    write_files,
+    write_if_changed,
+)
 
 
 def test_plan_says_create_update_unchanged_and_skip(tmp_path: Path) -> None:
@@ -26,11 +31,11 @@ def test_plan_says_create_update_unchanged_and_skip(tmp_path: Path) -> None:
             DesiredFile(tmp_path / "kept.meta", b"guid: ours", create_only=True),
         ]
     )
-    assert [(c.path.name, c.action) for c in changes] == [
-        ("kept.meta", Action.SKIP),
-        ("new.cs", Action.CREATE),
-        ("old.cs", Action.UPDATE),
-        ("same.cs", Action.UNCHANGED),
+    assert [(c.path.name, c.kind) for c in changes] == [
+        ("kept.meta", ChangeKind.SKIP),
+        ("new.cs", ChangeKind.CREATE),
+        ("old.cs", ChangeKind.UPDATE),
+        ("same.cs", ChangeKind.UNCHANGED),
     ]
 
 
@@ -58,16 +63,16 @@ def test_a_failure_while_writing_leaves_nothing_behind(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     (tmp_path / "old.cs").write_bytes(b"old")
-    real = files._write_temp
+    real = fileout._write_temp
     calls = []
 
-    def flaky(change: files.FileChange, mode: int) -> Path:
-        calls.append(change.path)
+    def flaky(path: Path, content: bytes, mode: int) -> Path:
+        calls.append(path)
         if len(calls) == 3:
-            raise OSError(28, "No space left on device", str(change.path))
-        return real(change, mode)
+            raise OSError(28, "No space left on device", str(path))
+        return real(path, content, mode)
 
-    monkeypatch.setattr(files, "_write_temp", flaky)
+    monkeypatch.setattr(fileout, "_write_temp", flaky)
     changes = plan_files(
         [
             DesiredFile(tmp_path / "old.cs", b"new"),
@@ -75,7 +80,7 @@ def test_a_failure_while_writing_leaves_nothing_behind(
             DesiredFile(tmp_path / "pkg" / "sub" / "b.cs", b"b"),
         ]
     )
-    with pytest.raises(UserError, match="No space left"):
+    with pytest.raises(UserError, match=r"cannot write .*b\.cs: No space left"):
         write_files(changes)
     assert sorted(p.name for p in tmp_path.rglob("*")) == ["old.cs"]
     assert (tmp_path / "old.cs").read_bytes() == b"old"
@@ -93,3 +98,67 @@ def test_a_file_where_a_folder_must_go_is_reported_before_writing(tmp_path: Path
 def test_new_files_get_normal_permissions(tmp_path: Path) -> None:
     write_files(plan_files([DesiredFile(tmp_path / "a.cs", b"a")]))
     assert (tmp_path / "a.cs").stat().st_mode & 0o644 == 0o644
+
+
+def test_a_failed_rename_removes_the_temporary_files_and_says_how_far_it_got(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    real = os.replace
+
+    def refuse_b(source: str | Path, target: str | Path) -> None:
+        if Path(target).name == "b.cs":
+            raise OSError(13, "Permission denied", str(target))
+        real(source, target)
+
+    monkeypatch.setattr(os, "replace", refuse_b)
+    changes = plan_files([DesiredFile(tmp_path / n, n.encode()) for n in ("a.cs", "b.cs", "c.cs")])
+    with pytest.raises(UserError, match=r"cannot replace .*b\.cs: Permission denied; 1 of 3"):
+        write_files(changes)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.cs"]
+
+
+def test_an_updated_file_keeps_its_permission_bits(tmp_path: Path) -> None:
+    path = tmp_path / "run.sh"
+    path.write_bytes(b"old")
+    path.chmod(0o751)
+    write_files(plan_files([DesiredFile(path, b"new")]))
+    assert path.read_bytes() == b"new" and path.stat().st_mode & 0o7777 == 0o751
+
+
+def test_write_if_changed_creates_replaces_and_skips(tmp_path: Path) -> None:
+    target = tmp_path / "f.txt"
+    assert write_if_changed(target, "a\n") is True
+    before = target.stat().st_mtime_ns
+    assert write_if_changed(str(target), b"a\n") is False
+    assert target.stat().st_mtime_ns == before
+    assert write_if_changed(target, "b\r\n") is True
+    assert target.read_bytes() == b"b\r\n"
+    assert target.stat().st_mode & 0o644 == 0o644
+    assert [p.name for p in tmp_path.iterdir()] == ["f.txt"]
+
+
+def test_write_if_changed_keeps_permissions_and_reports_failures_as_user_errors(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    target = tmp_path / "robot.yaml"
+    target.write_text("old")
+    target.chmod(0o640)
+    assert write_if_changed(target, "new")
+    assert target.stat().st_mode & 0o7777 == 0o640
+
+    def refuse(source: str | Path, target: str | Path) -> None:
+        raise OSError(16, "Device or resource busy", str(target))
+
+    monkeypatch.setattr(os, "replace", refuse)
+    with pytest.raises(
+        UserError, match=r"robot\.yaml: Device or resource busy; it was left as it was"
+    ):
+        write_if_changed(target, "newer")
+    assert target.read_text() == "new"
+    assert [p.name for p in tmp_path.iterdir()] == ["robot.yaml"]
+
+
+def test_write_if_changed_refuses_a_folder_in_the_way(tmp_path: Path) -> None:
+    (tmp_path / "Scene.unity").mkdir()
+    with pytest.raises(UserError, match="a folder of that name exists"):
+        write_if_changed(tmp_path / "Scene.unity", "x")

@@ -8,7 +8,6 @@ import pytest
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity import _textops
-from unityscaffold.unity.atomic import write_if_changed
 from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.values import ScriptRef
@@ -90,14 +89,6 @@ def test_write_rewrites_only_when_bytes_change(tmp_path: Path) -> None:
     assert scene.write() is True
     assert path.read_text() == scene.text() and (path.stat().st_mode & 0o777) == 0o640
     assert SceneDocument.load(path).write() is False
-
-
-def test_write_if_changed_creates_replaces_and_skips(tmp_path: Path) -> None:
-    target = tmp_path / "f.txt"
-    assert write_if_changed(target, "a\n") is True
-    assert write_if_changed(target, b"a\n") is False
-    assert write_if_changed(target, "b\r\n") is True
-    assert target.read_bytes() == b"b\r\n"
 
 
 def test_the_diff_of_a_large_file_keeps_real_line_numbers() -> None:

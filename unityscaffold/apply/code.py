@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from unityscaffold.apply.files import DesiredFile
 from unityscaffold.apply.rossharp import RESERVED_NAMES
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
@@ -22,6 +21,7 @@ from unityscaffold.codegen.scripts import (
     render_script,
 )
 from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.fileout import DesiredFile
 from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Direction, Manifest, Role, Service, Topic

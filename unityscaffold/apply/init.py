@@ -11,10 +11,10 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
-from unityscaffold.apply.files import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.apply.rossharp import DEFAULT_VERSION
 from unityscaffold.codegen._templates import environment, templates_dir
 from unityscaffold.errors import UserError
+from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.manifest import starter_manifest
 
 __all__ = ["MAIN_SCENE", "init_project"]

@@ -10,7 +10,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply.code import CodePlan, plan_code
-from unityscaffold.apply.files import DesiredFile, FileChange, plan_files
 from unityscaffold.apply.lock import LockFile, lock_path, sha256
 from unityscaffold.apply.prune import plan_pruning
 from unityscaffold.apply.rossharp import RosSharp
@@ -18,6 +17,7 @@ from unityscaffold.apply.scenes import ScenePlan, plan_scenes
 from unityscaffold.apply.settings import with_ros_define
 from unityscaffold.apply.userfiles import plan_user_files
 from unityscaffold.errors import UserError
+from unityscaffold.fileout import DesiredFile, FileChange, plan_files
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Manifest

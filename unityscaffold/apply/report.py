@@ -5,27 +5,27 @@ from __future__ import annotations
 import difflib
 from typing import Any
 
-from unityscaffold.apply.files import Action
 from unityscaffold.apply.plan import Plan
+from unityscaffold.fileout import ChangeKind
 
 __all__ = ["plan_diff", "plan_json", "plan_summary"]
 
 
 def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
-    counts = {action: 0 for action in Action}
+    counts = {kind: 0 for kind in ChangeKind}
     for change in plan.changes:
-        counts[change.action] += 1
+        counts[change.kind] += 1
     m = plan.manifest
-    unchanged = counts[Action.UNCHANGED] + counts[Action.SKIP]
+    unchanged = counts[ChangeKind.UNCHANGED] + counts[ChangeKind.SKIP]
     lines = [
         f"{m.path.name}: Unity project {m.project_root} (ROS {int(m.ros)})",
-        f"files: {counts[Action.CREATE]} to create, {counts[Action.UPDATE]} to update, "
+        f"files: {counts[ChangeKind.CREATE]} to create, {counts[ChangeKind.UPDATE]} to update, "
         f"{len(plan.deletions)} to remove, {unchanged} unchanged",
     ]
     if verbose:
         for change in plan.changes:
             if change.writes:
-                lines.append(f"  {change.action.value:<7} {plan.relative(change.path)}")
+                lines.append(f"  {change.kind.value:<7} {plan.relative(change.path)}")
         lines += [f"  remove  {plan.relative(path)}" for path in plan.deletions]
     for scene in plan.scenes:
         if scene.actions:
@@ -46,7 +46,7 @@ def plan_diff(plan: Plan) -> str:
     """Unified diffs of updated and removed files (new files are listed in the summary)."""
     parts: list[str] = []
     for change in plan.changes:
-        if change.action is not Action.UPDATE:
+        if change.kind is not ChangeKind.UPDATE:
             continue
         name = plan.relative(change.path)
         before = _text(change.path.read_bytes())
@@ -63,7 +63,7 @@ def plan_json(plan: Plan) -> dict[str, Any]:
         "project": str(plan.manifest.project_root),
         "in_sync": plan.in_sync and not plan.conflicts,
         "files": [
-            {"path": plan.relative(c.path), "action": c.action.value}
+            {"path": plan.relative(c.path), "action": c.kind.value}
             for c in plan.changes
             if c.writes
         ],

@@ -6,10 +6,10 @@ import enum
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply.files import write_files
 from unityscaffold.apply.lock import lock_path
 from unityscaffold.apply.plan import Plan, make_plan
 from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.fileout import write_files
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest import load_manifest
 from unityscaffold.manifest.model import Manifest

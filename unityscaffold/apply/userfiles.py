@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply.code import CodePlan
-from unityscaffold.apply.files import DesiredFile
 from unityscaffold.apply.lock import LockFile, sha256
+from unityscaffold.fileout import DesiredFile
 from unityscaffold.manifest.model import Manifest
 
 __all__ = ["UserFiles", "plan_user_files"]

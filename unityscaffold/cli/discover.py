@@ -11,6 +11,7 @@ from typing import Any
 import typer
 
 from unityscaffold.errors import UserError
+from unityscaffold.fileout import write_if_changed
 from unityscaffold.interfaces import live
 from unityscaffold.interfaces.live.definitions import StagedCache, stage_definitions
 from unityscaffold.interfaces.model import Dialect
@@ -150,7 +151,7 @@ def _finish(
         return
     staged.commit()
     if write_manifest and changes.changed:
-        edit.write_manifest(manifest, changes.text)
+        write_if_changed(manifest, changes.text)
 
 
 def _report(

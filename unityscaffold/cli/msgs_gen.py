@@ -8,11 +8,11 @@ from pathlib import Path
 
 import typer
 
-from unityscaffold.apply.files import Action, FileChange, plan_files, write_files
 from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
+from unityscaffold.fileout import ChangeKind, FileChange, plan_files, write_files
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 
@@ -83,16 +83,16 @@ def run(
 def _report(generation: Generation, changes: list[FileChange], out: Path) -> None:
     base = out.resolve()
     for change in changes:
-        if change.action is not Action.UNCHANGED:
+        if change.kind is not ChangeKind.UNCHANGED:
             reason = f" ({change.reason})" if change.reason else ""
-            typer.echo(f"{change.action.value:9} {os.path.relpath(change.path, base)}{reason}")
+            typer.echo(f"{change.kind.value:9} {os.path.relpath(change.path, base)}{reason}")
     for skipped in generation.skipped:
         typer.echo(f"{'skip':9} {skipped.path} ({skipped.ros_type}): {skipped.reason}")
-    counts = {a: sum(1 for c in changes if c.action is a) for a in Action}
+    counts = {k: sum(1 for c in changes if c.kind is k) for k in ChangeKind}
     typer.echo(
         f"{len(generation.files)} classes generated, {len(generation.skipped)} skipped; "
-        f"files: {counts[Action.CREATE]} created, {counts[Action.UPDATE]} updated, "
-        f"{counts[Action.UNCHANGED]} unchanged, {counts[Action.SKIP]} kept"
+        f"files: {counts[ChangeKind.CREATE]} created, {counts[ChangeKind.UPDATE]} updated, "
+        f"{counts[ChangeKind.UNCHANGED]} unchanged, {counts[ChangeKind.SKIP]} kept"
     )
 
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from unityscaffold.apply.files import DesiredFile
 from unityscaffold.codegen.generate import Generation
+from unityscaffold.fileout import DesiredFile
 from unityscaffold.unity.meta import folder_meta, guid_for, monoscript_meta
 from unityscaffold.unity.project import FALLBACK_SALT, find_project_root, project_salt
 

@@ -12,7 +12,6 @@ import io
 import itertools
 import os
 import re
-import tempfile
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -37,7 +36,6 @@ __all__ = [
     "interface_folders",
     "manifest_fragment",
     "read_manifest",
-    "write_manifest",
 ]
 
 DEFAULT_GAMEOBJECT = "RosConnector"
@@ -261,20 +259,6 @@ def manifest_fragment(discovery: Discovery, *, cache_entry: str) -> str:
     fragment = f"# discovered from {discovery.source}\nros: {int(discovery.dialect)}\n"
     edit = edit_manifest(fragment, discovery, cache_entry=cache_entry, path="<fragment>")
     return edit.text
-
-
-def write_manifest(path: Path, text: str) -> None:
-    """Replace ``path`` atomically, so an interrupted write never leaves half a manifest."""
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8", newline="") as out:
-            out.write(text)
-        if path.exists():
-            os.chmod(temporary, path.stat().st_mode & 0o7777)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
 
 
 def read_manifest(path: Path) -> str:

@@ -2,11 +2,10 @@
 
 ``SceneDocument`` loads a text scene or prefab byte-exactly, indexes its hierarchy, and attaches
 or updates MonoBehaviours idempotently (see ``docs/unity-yaml.md``). ``meta`` writes and
-reads ``.meta`` files, ``project`` finds a project's root, salt and script GUIDs, and
-``atomic.write_if_changed`` is the one way files get written.
+reads ``.meta`` files, and ``project`` finds a project's root, salt and script GUIDs. Nothing
+here writes a file itself: ``SceneDocument.write`` goes through ``unityscaffold.fileout``.
 """
 
-from unityscaffold.unity.atomic import write_if_changed
 from unityscaffold.unity.index import Component, GameObject
 from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.textdiff import diff
@@ -32,5 +31,4 @@ __all__ = [
     "ScriptRef",
     "diff",
     "script_file_id_for_dll_class",
-    "write_if_changed",
 ]

@@ -14,9 +14,9 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
+from unityscaffold.fileout import write_if_changed
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._split import Doc, split_text
-from unityscaffold.unity.atomic import write_if_changed
 from unityscaffold.unity.generation import Generation, detect
 from unityscaffold.unity.index import Component, GameObject, Hierarchy, build_hierarchy
 from unityscaffold.unity.textdiff import diff

@@ -1,0 +1,209 @@
+"""File output, the one way unityscaffold writes files: compare before writing, then replace.
+
+A ``DesiredFile`` is a file as it should be. ``plan_files`` compares desired files with the disk
+and says what writing them would do, as ``FileChange`` values of a ``ChangeKind``: create,
+update, unchanged, or skip (a create-only file that exists, such as a ``.meta`` whose GUID must
+never change). Planning reads and never writes, so ``plan`` and ``apply --check`` share it.
+
+``write_files`` writes a batch all or nothing: each changed file goes to a temporary file in its
+own folder, and only once every one is written are they renamed into place, so a failure leaves
+no half-written file, no temporary file and no new folder behind. ``write_if_changed`` is the
+same path for a single file. A file whose bytes are unchanged is never rewritten, an existing
+file keeps its permission bits, and a new one gets the mode the umask allows.
+
+This module sits at the bottom of the layers (see ``tests/test_layers.py``): it imports only
+``unityscaffold.errors``, so every other package may use it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import enum
+import os
+import tempfile
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.errors import UserError
+
+__all__ = [
+    "ChangeKind",
+    "DesiredFile",
+    "FileChange",
+    "plan_files",
+    "write_files",
+    "write_if_changed",
+]
+
+
+class ChangeKind(enum.Enum):
+    """What writing one desired file does to the disk."""
+
+    CREATE = "create"
+    UPDATE = "update"
+    UNCHANGED = "unchanged"
+    SKIP = "skip"
+
+
+@dataclass(frozen=True, slots=True)
+class DesiredFile:
+    """A file as it should be; ``create_only`` files are written only when missing."""
+
+    path: Path
+    content: bytes
+    create_only: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class FileChange:
+    """What writing one desired file would do."""
+
+    path: Path
+    kind: ChangeKind
+    content: bytes
+    reason: str = ""
+
+    @property
+    def writes(self) -> bool:
+        return self.kind in (ChangeKind.CREATE, ChangeKind.UPDATE)
+
+
+# ----- planning: read, never write ---------------------------------------------------------------
+
+
+def _blocking_ancestor(path: Path) -> Path | None:
+    """An ancestor of ``path`` that exists but is not a folder."""
+    for parent in reversed(path.parents):
+        if parent.exists() and not parent.is_dir():
+            return parent
+    return None
+
+
+def _change(want: DesiredFile) -> FileChange:
+    path = want.path
+    if path.is_dir():
+        raise UserError(f"cannot write {path}: a folder of that name exists")
+    blocker = _blocking_ancestor(path)
+    if blocker is not None:
+        raise UserError(
+            f"cannot write {path}: {blocker} exists and is not a folder",
+            hint="choose another output folder, or move that file away",
+        )
+    try:
+        current = path.read_bytes()
+    except FileNotFoundError:
+        return FileChange(path, ChangeKind.CREATE, want.content)
+    except OSError as exc:
+        raise UserError(f"cannot read {path}: {exc.strerror}") from None
+    if current == want.content:
+        return FileChange(path, ChangeKind.UNCHANGED, want.content)
+    if want.create_only:
+        return FileChange(path, ChangeKind.SKIP, want.content, "exists; kept as it is")
+    return FileChange(path, ChangeKind.UPDATE, want.content)
+
+
+def plan_files(desired: Iterable[DesiredFile]) -> list[FileChange]:
+    """What writing ``desired`` would change, sorted by path; reads, never writes."""
+    by_path: dict[Path, DesiredFile] = {}
+    for want in desired:
+        other = by_path.setdefault(want.path, want)
+        if other.content != want.content:
+            raise UserError(f"two different contents planned for {want.path}")
+    return [_change(by_path[path]) for path in sorted(by_path)]
+
+
+# ----- writing: temporary files first, renamed into place at the end -----------------------------
+
+
+def _make_folders(folder: Path, created: list[Path], ready: set[Path]) -> None:
+    """Create ``folder`` and its missing parents, recording each in ``created`` for rollback."""
+    if folder in ready:
+        return
+    ready.add(folder)
+    missing = [p for p in (folder, *folder.parents) if not p.exists()]
+    for path in reversed(missing):
+        path.mkdir()
+        created.append(path)
+
+
+def _new_file_mode() -> int:
+    # mkstemp creates files as 0600; a new output file should get what open() would give it.
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+def _write_temp(path: Path, content: bytes, mode: int) -> Path:
+    """``content`` in a new temporary file beside ``path``, with ``path``'s permission bits
+    (``mode`` if ``path`` does not exist); the temporary file is removed if this fails."""
+    handle, name = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    temp = Path(name)
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(content)
+            stream.flush()
+            os.fsync(stream.fileno())
+        keep = path.stat().st_mode & 0o7777 if path.exists() else mode
+        os.chmod(temp, keep)
+    except BaseException:
+        temp.unlink(missing_ok=True)
+        raise
+    return temp
+
+
+def _stage(todo: Sequence[FileChange]) -> list[tuple[Path, Path]]:
+    """Every change written to a temporary file, as ``(temporary, target)`` pairs; on failure,
+    the temporary files and the folders made for them are removed again."""
+    created: list[Path] = []
+    temps: list[tuple[Path, Path]] = []
+    mode = _new_file_mode()
+    ready: set[Path] = set()
+    current = None
+    try:
+        for change in todo:
+            current = change.path
+            _make_folders(change.path.parent, created, ready)
+            temps.append((_write_temp(change.path, change.content, mode), change.path))
+    except BaseException as exc:
+        for temp, _ in temps:
+            temp.unlink(missing_ok=True)
+        for folder in reversed(created):
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        if isinstance(exc, OSError):
+            raise UserError(f"cannot write {current}: {exc.strerror}") from None
+        raise
+    return temps
+
+
+def _replace_all(temps: Sequence[tuple[Path, Path]]) -> None:
+    for done, (temp, path) in enumerate(temps):
+        try:
+            os.replace(temp, path)
+        except OSError as exc:
+            for leftover, _ in temps[done:]:
+                leftover.unlink(missing_ok=True)
+            written = f"{done} of {len(temps)} files were already written"
+            raise UserError(
+                f"cannot replace {path}: {exc.strerror}; "
+                + (written if len(temps) > 1 else "it was left as it was"),
+                hint="fix the cause (a file locked by another program?) and run "
+                "again: unchanged files are skipped",
+            ) from None
+
+
+def write_files(changes: Sequence[FileChange]) -> list[Path]:
+    """Write the ``create``/``update`` changes all at once; returns the paths written."""
+    temps = _stage([c for c in changes if c.writes])
+    _replace_all(temps)
+    return [path for _, path in temps]
+
+
+def write_if_changed(path: str | os.PathLike[str], data: str | bytes) -> bool:
+    """Write ``data`` to ``path`` only if its bytes differ; return whether the file was written.
+
+    ``str`` is encoded as UTF-8 with no newline translation. Missing folders are created.
+    """
+    content = data.encode("utf-8") if isinstance(data, str) else data
+    return bool(write_files(plan_files([DesiredFile(Path(path), content)])))
