@@ -19,7 +19,7 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
 SAMPLE = REPO / "sample_project"
-CLEAN_SCENE = REPO / "templates" / "unity_project" / "Assets" / "Scenes" / "Main.unity"
+CLEAN_SCENE = REPO / "unityscaffold/templates/unity_project/Assets/Scenes/Main.unity"
 
 
 def reset_to_clean(project: Path) -> None:

@@ -17,10 +17,10 @@ from pathlib import Path
 
 from unityscaffold.apply.files import plan_files, write_files
 from unityscaffold.codegen import Options, generate
-from unityscaffold.codegen._templates import environment
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
+from unityscaffold.resources import template_environment
 
 
 def _run(
@@ -46,7 +46,7 @@ def main() -> None:
         out = Path(tmp) / "RosMessages"
         totals = {"cold": 0.0, "warm": 0.0, "cold generate": 0.0, "warm generate": 0.0}
         for dialect in (Dialect.ROS1, Dialect.ROS2):
-            environment.cache_clear()
+            template_environment.cache_clear()
             registry, classes, files, cold_gen, cold = _run(dialect, None, out / dialect.name)
             warm_runs = [_run(dialect, registry, out / dialect.name) for _ in range(args.repeat)]
             warm = min(r[4] for r in warm_runs)

@@ -34,7 +34,7 @@ def test_apply_from_clean_writes_what_the_manifest_asks_and_a_second_run_writes_
     (sample / "unity" / "Assets" / "RosGenerated.meta").unlink()
     (sample / "robot.lock.json").unlink()
     shutil.copy(
-        REPO / "templates" / "unity_project" / "Assets" / "Scenes" / "Main.unity",
+        REPO / "unityscaffold" / "templates" / "unity_project" / "Assets" / "Scenes" / "Main.unity",
         sample / "unity" / "Assets" / "Scenes" / "Main.unity",
     )
     first = run_cli("apply", str(sample / "robot.yaml"))

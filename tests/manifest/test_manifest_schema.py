@@ -11,7 +11,8 @@ from ruamel.yaml import YAML
 from unityscaffold.errors import LocatedError
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest import load_manifest
-from unityscaffold.manifest.schema import build_schema, load_schema, render_schema, schema_path
+from unityscaffold.manifest.schema import build_schema, load_schema, render_schema
+from unityscaffold.resources import schema_text
 
 HERE = Path(__file__).parent
 VALID = sorted((HERE / "valid").glob("*.yaml"))
@@ -72,14 +73,15 @@ def _validator() -> Any:
 
 
 def test_shipped_schema_is_the_generated_one() -> None:
-    shipped = (REPO / "schema" / "robot.schema.json").read_text(encoding="utf-8")
+    shipped = (REPO / "unityscaffold/schema/robot.schema.json").read_text(encoding="utf-8")
     assert shipped == render_schema(), (
-        "regenerate: python -m unityscaffold.manifest.schema > schema/robot.schema.json"
+        "regenerate: python -m unityscaffold.manifest.schema"
+        " > unityscaffold/schema/robot.schema.json"
     )
 
 
 def test_schema_is_found_at_runtime() -> None:
-    assert schema_path().read_text(encoding="utf-8") == render_schema()
+    assert schema_text() == render_schema()
 
 
 def _object_schemas(schema: dict[str, Any]) -> dict[str, dict[str, Any]]:

@@ -1,9 +1,9 @@
 """``scaffold init``: a new Unity project that ``scaffold apply`` can work on at once.
 
-The files come from ``templates/unity_project/`` (``*.jinja`` ones rendered); the starter
-manifest from ``manifest.starter_manifest``. The project's ``productGUID`` (which also salts
-the GUIDs of generated ``.meta`` files) is derived from the project's folder name, so the same
-command gives the same files.
+The files come from the package's ``templates/unity_project/`` (``*.jinja`` ones rendered),
+the starter manifest from ``manifest.starter_manifest``. The project's ``productGUID`` (which
+also salts the GUIDs of generated ``.meta`` files) is derived from the project's folder name,
+so the same command gives the same files.
 """
 
 from __future__ import annotations
@@ -12,10 +12,10 @@ import hashlib
 from pathlib import Path
 
 from unityscaffold.apply.rossharp import DEFAULT_VERSION
-from unityscaffold.codegen._templates import environment, templates_dir
 from unityscaffold.errors import UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.manifest import starter_manifest
+from unityscaffold.resources import template_environment, template_folder
 
 __all__ = ["MAIN_SCENE", "init_project"]
 
@@ -25,18 +25,16 @@ _RENAMES = {"gitignore": ".gitignore", "gitattributes": ".gitattributes"}
 
 
 def _template_files(context: dict[str, str]) -> list[tuple[str, bytes]]:
-    root = templates_dir() / _TEMPLATE_ROOT
     files = []
-    for source in sorted(p for p in root.rglob("*") if p.is_file() and p.name != "README.md"):
-        relative = source.relative_to(root).as_posix()
-        relative = _RENAMES.get(relative, relative)
+    for source, data in template_folder(_TEMPLATE_ROOT).items():
+        if source.rsplit("/", 1)[-1] == "README.md":
+            continue
+        relative = _RENAMES.get(source, source)
         if relative.endswith(".jinja"):
-            text = environment().get_template(
-                f"{_TEMPLATE_ROOT}/{source.relative_to(root).as_posix()}"
-            )
-            files.append((relative[: -len(".jinja")], text.render(**context).encode("utf-8")))
+            template = template_environment().get_template(f"{_TEMPLATE_ROOT}/{source}")
+            files.append((relative[: -len(".jinja")], template.render(**context).encode("utf-8")))
         else:
-            files.append((relative, source.read_bytes()))
+            files.append((relative, data))
     return files
 
 

@@ -1,7 +1,7 @@
 """C# generation: ROS interfaces -> message, service and action classes for a Unity runtime.
 
-One target today, Siemens' ROS# (templates in ``templates/rossharp/``); everything here is
-pure: it returns files and the ROS-type-to-class map, it never writes.
+One target today, Siemens' ROS# (templates in the package's ``templates/rossharp/``); everything
+here is pure: it returns files and the ROS-type-to-class map, it never writes.
 """
 
 from unityscaffold.codegen.generate import (

@@ -15,10 +15,10 @@ from unityscaffold.codegen._build import FileContext, build_message
 from unityscaffold.codegen._identity import Identities
 from unityscaffold.codegen._names import CsClass
 from unityscaffold.codegen._plan import Plan, PlannedClass
-from unityscaffold.codegen._templates import environment
 from unityscaffold.codegen.views import View
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
+from unityscaffold.resources import template_environment
 
 __all__ = ["GeneratedFile", "Generation", "Options", "SkippedClass", "generate"]
 
@@ -80,7 +80,7 @@ class Generation:
 
 
 def _render(view: View) -> str:
-    return environment().get_template(view.template).render(view=view)
+    return template_environment().get_template(view.template).render(view=view)
 
 
 def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> View:

@@ -14,8 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from unityscaffold.codegen._templates import environment
 from unityscaffold.codegen.literals import string_literal as csharp_string
+from unityscaffold.resources import template_environment
 
 __all__ = [
     "SCRIPTS_NAMESPACE",
@@ -80,7 +80,7 @@ class PublisherScript(_TopicScript):
     def rate_text(self) -> str:
         return f"{self.rate:g}"
 
-    def serialized_fields(self) -> list[tuple[str, object]]:
+    def serialized_fields(self) -> list[tuple[str, str | int | float]]:
         """Field values the scene holds, in declaration order (``Connector`` set by apply)."""
         return [("Topic", self.topic), ("Rate", float(self.rate))]
 
@@ -96,7 +96,7 @@ class SubscriberScript(_TopicScript):
     def what(self) -> str:
         return f"subscriber of {self.topic}"
 
-    def serialized_fields(self) -> list[tuple[str, object]]:
+    def serialized_fields(self) -> list[tuple[str, str | int | float]]:
         return [("Topic", self.topic), ("Throttle", int(self.throttle)), ("Queue", int(self.queue))]
 
 
@@ -114,7 +114,7 @@ class _ServiceScript(_Script):
     def request_short(self) -> str:
         return self.request_type.rsplit(".", 1)[-1]
 
-    def serialized_fields(self) -> list[tuple[str, object]]:
+    def serialized_fields(self) -> list[tuple[str, str | int | float]]:
         return [("ServiceName", self.service)]
 
 
@@ -152,7 +152,7 @@ class RenderedScript:
 
 
 def render_script(view: Script) -> RenderedScript:
-    env = environment()
+    env = template_environment()
     plumbing = env.get_template(view.template).render(view=view)
     user = env.get_template(view.user_template).render(view=view)
     return RenderedScript(view.plumbing_file, plumbing, view.user_file, user)

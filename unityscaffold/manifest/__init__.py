@@ -4,8 +4,8 @@
 problem found, sorted by position) or ``UserError``. The returned ``Manifest`` has every default
 applied and every path resolved; nothing is resolved against ROS or the Unity project yet
 (unknown types and missing GameObjects are the ``apply`` stage's to report, at the locations
-kept in each item's ``locations``). ``schema/robot.schema.json`` is the same key table as JSON
-Schema, for editors.
+kept in each item's ``locations``). The package's ``schema/robot.schema.json`` is the same key
+table as JSON Schema, for editors.
 """
 
 from unityscaffold.manifest.loader import load_manifest, parse_manifest

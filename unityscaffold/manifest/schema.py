@@ -4,7 +4,7 @@
 so editors and ``scaffold`` accept the same keys. The shipped file is that output; regenerate
 it after changing the table with::
 
-    python -m unityscaffold.manifest.schema > schema/robot.schema.json
+    python -m unityscaffold.manifest.schema > unityscaffold/schema/robot.schema.json
 
 (a test fails while the two differ). Rules the schema cannot express (scenes inside the project,
 duplicate names, a scene for every entry) are only checked by ``scaffold``.
@@ -14,16 +14,12 @@ from __future__ import annotations
 
 import json
 import sys
-from pathlib import Path
 from typing import Any
 
-import unityscaffold
-from unityscaffold.errors import InternalError
 from unityscaffold.manifest import _spec as spec
+from unityscaffold.resources import schema_text
 
-__all__ = ["build_schema", "load_schema", "render_schema", "schema_path"]
-
-_FILE = "robot.schema.json"
+__all__ = ["build_schema", "load_schema", "render_schema"]
 
 _FIELD_VALUE = {
     "description": "A serialized field value: number, text, boolean, list or mapping "
@@ -74,20 +70,9 @@ def render_schema() -> str:
     return json.dumps(build_schema(), indent=2, ensure_ascii=False) + "\n"
 
 
-def schema_path() -> Path:
-    """The shipped schema: inside the installed package (wheel), else the source checkout's."""
-    package = Path(unityscaffold.__file__).parent
-    for candidate in (package / "schema" / _FILE, package.parent / "schema" / _FILE):
-        if candidate.is_file():
-            return candidate
-    raise InternalError(
-        f"{_FILE} is missing from the installation (looked in "
-        f"{package / 'schema'} and {package.parent / 'schema'})"
-    )
-
-
 def load_schema() -> dict[str, Any]:
-    result: dict[str, Any] = json.loads(schema_path().read_text(encoding="utf-8"))
+    """The shipped schema, as the installed package holds it."""
+    result: dict[str, Any] = json.loads(schema_text())
     return result
 
 
