@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import shutil
+from pathlib import Path
+
 import pytest
+from helpers import run_cli, snapshot
 
 from unityscaffold.apply.lock import LockComponent, LockFile, lock_path
 from unityscaffold.errors import UserError
@@ -36,32 +40,162 @@ def test_a_missing_lock_is_empty(tmp_path):
     assert LockFile.read(tmp_path / "none.lock.json") == LockFile()
 
 
-@pytest.mark.parametrize("text", ["{", "[]", '{"version": 2}', '{"version": 1, "files": {}}'])
-def test_an_unreadable_lock_is_a_user_error(tmp_path, text):
-    path = tmp_path / "robot.lock.json"
-    path.write_text(text)
-    with pytest.raises(UserError, match="not a valid unityscaffold lock file"):
-        LockFile.read(path)
+_EMPTY = '"files": {}, "user_files": {}, "components": []'
+_SCENE = '"scene": "Assets/S.unity", "gameobject": "A", "script": "g"'
+_INSIDE = "a path inside the project's Assets/ folder"
+
+
+def _lock(*entries: str) -> str:
+    return "{" + ", ".join(['"version": 1', *entries]) + "}"
+
+
+def _components(*items: str) -> str:
+    return '"files": {}, "user_files": {}, "components": [' + ", ".join(items) + "]"
 
 
 @pytest.mark.parametrize(
-    "entry",
+    ("text", "detail"),
     [
-        '"files": {"../../victim.txt": "x"}, "user_files": {}, "components": []',
-        '"files": {"/tmp/victim.txt": "x"}, "user_files": {}, "components": []',
-        '"files": {"Assets/../../victim.txt": "x"}, "user_files": {}, "components": []',
-        '"files": {"ProjectSettings/ProjectSettings.asset": "x"}, "user_files": {}, '
-        '"components": []',
-        '"files": {"Assets/a.cs": 1}, "user_files": {}, "components": []',
-        '"files": {}, "user_files": {}, '
-        '"components": [{"scene": "../evil.unity", "gameobject": "A", "script": "g"}]',
-        '"files": {}, "user_files": {}, '
-        '"components": [{"scene": "Assets/S.unity", "gameobject": 1, "script": "g"}]',
+        (
+            "{",
+            "invalid JSON at line 1, column 2 (expecting property name enclosed in double quotes)",
+        ),
+        (
+            '{"version": 1,\n  "files": {} "x"}',
+            "invalid JSON at line 2, column 15 (expecting ',' delimiter)",
+        ),
+        ("[]", "the whole file should be an object, found a list"),
+        ("7", "the whole file should be an object, found the number 7"),
+        ("{" + _EMPTY + "}", "version should be 1, found nothing"),
+        ('{"version": 2, ' + _EMPTY + "}", "version should be 1, found the number 2"),
+        ('{"version": "1", ' + _EMPTY + "}", 'version should be 1, found the string "1"'),
+        ('{"version": true, ' + _EMPTY + "}", "version should be 1, found true"),
+        (_lock('"files": {}'), "user_files should be an object, found nothing"),
+        (_lock('"files": 1', '"user_files": {}'), "files should be an object, found the number 1"),
+        (_lock('"files": []', '"user_files": {}'), "files should be an object, found a list"),
+        (_lock('"files": {}', '"user_files": null'), "user_files should be an object, found null"),
+        (
+            _lock('"files": {"Assets/a.cs": 1}', '"user_files": {}'),
+            'files["Assets/a.cs"] should be a sha256 string, found the number 1',
+        ),
+        (
+            _lock('"files": {}', '"user_files": {"Assets/ü.cs": {}}'),
+            'user_files["Assets/ü.cs"] should be a sha256 string, found an object',
+        ),
+        (_lock('"files": {}', '"user_files": {}'), "components should be a list, found nothing"),
+        (
+            _lock('"files": {}', '"user_files": {}', '"components": {}'),
+            "components should be a list, found an object",
+        ),
+        (_lock(_components("1")), "components[0] should be an object, found the number 1"),
+        (
+            _lock(_components("{" + _SCENE + "}", '"Assets/S.unity"')),
+            'components[1] should be an object, found the string "Assets/S.unity"',
+        ),
+        (
+            _lock(_components('{"scene": "Assets/S.unity", "gameobject": 1, "script": "g"}')),
+            "components[0].gameobject should be a string, found the number 1",
+        ),
+        (
+            _lock(_components('{"scene": "Assets/S.unity", "gameobject": "A"}')),
+            "components[0].script should be a string, found nothing",
+        ),
+        (
+            _lock(_components("{" + _SCENE + ', "source": null}')),
+            "components[0].source should be a string, found null",
+        ),
     ],
 )
-def test_a_lock_pointing_outside_the_assets_folder_is_refused(tmp_path, entry):
+def test_a_malformed_lock_says_what_was_expected_where(tmp_path, text, detail):
+    path = tmp_path / "robot.lock.json"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(UserError) as caught:
+        LockFile.read(path)
+    assert caught.value.message == f"{path} is not a valid unityscaffold lock file: {detail}"
+    assert caught.value.hint == (
+        "restore it from git, or delete it and run apply again to rebuild it "
+        "(generated files that differ from the new output then count as hand edits)"
+    )
+
+
+def test_a_lock_that_is_not_utf8_is_refused(tmp_path):
+    path = tmp_path / "robot.lock.json"
+    path.write_bytes(b'{"version": 1, "files": {"Assets/\xff.cs": "x"}}')
+    with pytest.raises(UserError) as caught:
+        LockFile.read(path)
+    assert (
+        caught.value.message
+        == f"{path} is not a valid unityscaffold lock file: it is not UTF-8 text"
+    )
+
+
+@pytest.mark.parametrize(
+    ("entry", "detail"),
+    [
+        (
+            '"files": {"../../victim.txt": "x"}, "user_files": {}, "components": []',
+            f'files has the key "../../victim.txt", which is not {_INSIDE}',
+        ),
+        (
+            '"files": {"/tmp/victim.txt": "x"}, "user_files": {}, "components": []',
+            f'files has the key "/tmp/victim.txt", which is not {_INSIDE}',
+        ),
+        (
+            '"files": {"Assets/../../victim.txt": "x"}, "user_files": {}, "components": []',
+            f'files has the key "Assets/../../victim.txt", which is not {_INSIDE}',
+        ),
+        (
+            '"files": {"ProjectSettings/ProjectSettings.asset": "x"}, "user_files": {}, '
+            '"components": []',
+            f'files has the key "ProjectSettings/ProjectSettings.asset", which is not {_INSIDE}',
+        ),
+        (
+            '"files": {}, "user_files": {"Assets\\\\..\\\\..\\\\victim.txt": "x"}, '
+            '"components": []',
+            f'user_files has the key "Assets\\\\..\\\\..\\\\victim.txt", which is not {_INSIDE}',
+        ),
+        (
+            _components('{"scene": "../evil.unity", "gameobject": "A", "script": "g"}'),
+            f'components[0].scene should be {_INSIDE}, found the string "../evil.unity"',
+        ),
+    ],
+)
+def test_a_lock_pointing_outside_the_assets_folder_is_refused(tmp_path, entry, detail):
     """The lock decides what apply deletes and edits: a tampered one must not reach elsewhere."""
     path = tmp_path / "robot.lock.json"
     path.write_text('{"version": 1, ' + entry + "}")
-    with pytest.raises(UserError, match="not a valid unityscaffold lock file"):
+    with pytest.raises(UserError) as caught:
         LockFile.read(path)
+    assert caught.value.message == f"{path} is not a valid unityscaffold lock file: {detail}"
+
+
+@pytest.mark.parametrize(
+    ("text", "detail"),
+    [
+        ('{"version": 1, "files": 1}', "files should be an object, found the number 1"),
+        (
+            _lock(_components("[]")),
+            "components[0] should be an object, found a list",
+        ),
+        (
+            "{not json",
+            "invalid JSON at line 1, column 2 (expecting property name enclosed in double quotes)",
+        ),
+    ],
+)
+def test_apply_with_a_malformed_lock_stops_with_its_message_and_writes_nothing(
+    tmp_path, text, detail
+):
+    sample = tmp_path / "sample_project"
+    shutil.copytree(Path(__file__).resolve().parents[2] / "sample_project", sample)
+    lock = sample / "robot.lock.json"
+    lock.write_text(text, encoding="utf-8")
+    before = snapshot(sample)
+    run = run_cli("apply", str(sample / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert run.err == (
+        f"error: {lock} is not a valid unityscaffold lock file: {detail}\n"
+        "  hint: restore it from git, or delete it and run apply again to rebuild it "
+        "(generated files that differ from the new output then count as hand edits)\n"
+    )
+    assert snapshot(sample) == before

@@ -39,42 +39,96 @@ class LockComponent:
     source: str = ""  # what in the manifest asked for it, e.g. "topic /odom"
 
 
-def asset_path(value: object) -> str:
-    """A project-relative path from the lock, refused unless it stays inside ``Assets/``.
+class _Malformed(Exception):
+    """A part of the lock with the wrong shape, told by its JSON path.
 
-    The lock decides what apply deletes and which scenes it edits, so a lock edited by hand
-    (or by a bad merge) must not be able to point anywhere else.
+    Such as ``files["Assets/a.cs"] should be a sha256 string, found the number 1``.
     """
-    if not isinstance(value, str):
-        raise TypeError(f"expected a path, found {value!r}")
-    parts = PurePosixPath(value).parts
-    if (
-        not parts
-        or parts[0] != "Assets"
-        or ".." in parts
-        or "\\" in value
-        or PurePosixPath(value).is_absolute()
-    ):
-        raise ValueError(f"{value!r} is not a path inside the project's Assets/ folder")
+
+    def __init__(self, detail: str) -> None:
+        super().__init__(detail)
+        self.detail = detail
+
+
+_MISSING = object()  # a key the lock does not have
+
+
+def _wrong(where: str, expected: str, value: object) -> _Malformed:
+    return _Malformed(f"{where} should be {expected}, found {_describe(value)}")
+
+
+def _describe(value: object) -> str:
+    """A JSON value in the user's words, short enough for one line."""
+    if value is _MISSING:
+        return "nothing"
+    if value is None or isinstance(value, bool):
+        return json.dumps(value)
+    if isinstance(value, int | float):
+        return f"the number {value}"
+    if isinstance(value, str):
+        return "the string " + json.dumps(value, ensure_ascii=False)
+    return "a list" if isinstance(value, list) else "an object"
+
+
+def _object(value: object, where: str) -> dict[str, object]:
+    if not isinstance(value, dict):
+        raise _wrong(where, "an object", value)
     return value
 
 
-def _asset_map(data: dict[object, object]) -> dict[str, str]:
+def _string(value: object, where: str, expected: str = "a string") -> str:
+    if not isinstance(value, str):
+        raise _wrong(where, expected, value)
+    return value
+
+
+_INSIDE_ASSETS = "a path inside the project's Assets/ folder"
+
+
+def _inside_assets(path: str) -> bool:
+    """The lock decides what apply deletes and which scenes it edits, so a lock edited by hand
+    (or by a bad merge) must not be able to point outside ``Assets/``."""
+    parts = PurePosixPath(path).parts
+    return bool(parts) and parts[0] == "Assets" and ".." not in parts and "\\" not in path
+
+
+def _asset_map(data: dict[str, object], key: str) -> dict[str, str]:
+    entries = _object(data.get(key, _MISSING), key)
     found = {}
-    for key, value in data.items():
-        if not isinstance(value, str):
-            raise TypeError(f"expected a sha256 for {key!r}, found {value!r}")
-        found[asset_path(key)] = value
+    for path, digest in entries.items():
+        shown = json.dumps(path, ensure_ascii=False)
+        if not _inside_assets(path):
+            raise _Malformed(f"{key} has the key {shown}, which is not {_INSIDE_ASSETS}")
+        found[path] = _string(digest, f"{key}[{shown}]", "a sha256 string")
     return found
 
 
-def _component(data: dict[str, object]) -> LockComponent:
-    values = {key: data[key] for key in ("scene", "gameobject", "script")}
-    values["source"] = data.get("source", "")
-    if not all(isinstance(v, str) for v in values.values()):
-        raise TypeError(f"component entries hold strings, found {data!r}")
-    asset_path(values["scene"])
-    return LockComponent(**values)  # type: ignore[arg-type]
+def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
+    entries = data.get("components", _MISSING)
+    if not isinstance(entries, list):
+        raise _wrong("components", "a list", entries)
+    found = []
+    for index, entry in enumerate(entries):
+        where = f"components[{index}]"
+        item = _object(entry, where)
+        scene, gameobject, script = (
+            _string(item.get(key, _MISSING), f"{where}.{key}")
+            for key in ("scene", "gameobject", "script")
+        )
+        source = _string(item.get("source", ""), f"{where}.source")
+        if not _inside_assets(scene):
+            raise _wrong(f"{where}.scene", _INSIDE_ASSETS, scene)
+        found.append(LockComponent(scene, gameobject, script, source))
+    return tuple(found)
+
+
+def _parse(text: str) -> tuple[dict[str, str], dict[str, str], tuple[LockComponent, ...]]:
+    """The lock's files, user files and components; raises ``_Malformed`` or ``ValueError``."""
+    data = _object(json.loads(text), "the whole file")
+    version = data.get("version", _MISSING)
+    if type(version) is not int or version != LOCK_VERSION:
+        raise _wrong("version", str(LOCK_VERSION), version)
+    return _asset_map(data, "files"), _asset_map(data, "user_files"), _components(data)
 
 
 @dataclass(frozen=True, slots=True)
@@ -87,26 +141,27 @@ class LockFile:
     def read(cls, path: Path) -> LockFile:
         """The lock at ``path``; an empty one when there is none yet."""
         try:
-            text = path.read_text(encoding="utf-8")
+            data = path.read_bytes()
         except FileNotFoundError:
             return cls()
         except OSError as exc:
             raise UserError(f"cannot read {path}: {exc.strerror}") from None
         try:
-            data = json.loads(text)
-            if data.get("version") != LOCK_VERSION:
-                raise ValueError(f"unsupported lock version {data.get('version')!r}")
-            return cls(
-                files=_asset_map(data["files"]),
-                user_files=_asset_map(data["user_files"]),
-                components=tuple(_component(c) for c in data["components"]),
-            )
-        except (ValueError, KeyError, TypeError, AttributeError) as exc:
-            raise UserError(
-                f"{path} is not a valid unityscaffold lock file: {exc}",
-                hint="restore it from git, or delete it to start over (apply will "
-                "then treat existing generated files as hand-made)",
-            ) from None
+            files, user_files, components = _parse(data.decode("utf-8"))
+        except UnicodeDecodeError:
+            detail = "it is not UTF-8 text"
+        except json.JSONDecodeError as exc:
+            reason = exc.msg[:1].lower() + exc.msg[1:]
+            detail = f"invalid JSON at line {exc.lineno}, column {exc.colno} ({reason})"
+        except _Malformed as exc:
+            detail = exc.detail
+        else:
+            return cls(files, user_files, components)
+        raise UserError(
+            f"{path} is not a valid unityscaffold lock file: {detail}",
+            hint="restore it from git, or delete it and run apply again to rebuild it "
+            "(generated files that differ from the new output then count as hand edits)",
+        )
 
     def render(self) -> str:
         """Deterministic JSON: sorted keys and entries, LF, final newline."""
