@@ -1,8 +1,10 @@
-"""Small helpers shared by tests: build file trees inline and run the CLI in-process."""
+"""Small helpers shared by tests: build file trees inline, run the CLI in-process, and compare
+output with golden files and snapshots (showing a text diff when they differ)."""
 
 from __future__ import annotations
 
 import contextlib
+import difflib
 import io
 import os
 from dataclasses import dataclass
@@ -13,6 +15,7 @@ import pytest
 from unityscaffold.cli import main
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
+UPDATE_VARIABLE = "UNITYSCAFFOLD_UPDATE"
 
 
 def require(available: object, what: str) -> None:
@@ -58,3 +61,47 @@ def run_cli(*args: str) -> Run:
         except SystemExit as exc:  # click may still exit for --help
             code = int(exc.code or 0)
     return Run(code, out.getvalue(), err.getvalue())
+
+
+def updating() -> bool:
+    """True when ``UNITYSCAFFOLD_UPDATE=1``: golden files and snapshots are rewritten from the
+    current output instead of compared. Review the resulting ``git diff`` before committing."""
+    return os.environ.get(UPDATE_VARIABLE) == "1"
+
+
+def text_diff(expected: str | bytes, actual: str | bytes, name: str) -> str:
+    """A unified diff from ``expected`` to ``actual`` (two versions of ``name``), for a failure."""
+    if isinstance(expected, bytes) or isinstance(actual, bytes):
+        try:
+            expected = expected.decode("utf-8") if isinstance(expected, bytes) else expected
+            actual = actual.decode("utf-8") if isinstance(actual, bytes) else actual
+        except UnicodeDecodeError:
+            return f"{name}: binary contents differ"
+    lines = difflib.unified_diff(
+        expected.splitlines(keepends=True),
+        actual.splitlines(keepends=True),
+        f"{name} (expected)",
+        f"{name} (actual)",
+    )
+    # A difference in line endings or a final newline alone would show as an empty diff.
+    return "".join(lines) or f"{name}: differs only in line endings or the final newline"
+
+
+def tree_differences(actual: Path, expected: Path) -> str:
+    """Every difference between two folders: missing and extra files, then a diff per file."""
+    got, want = snapshot(actual), snapshot(expected)
+    problems = [f"missing: {name}" for name in sorted(want.keys() - got.keys())]
+    problems += [f"unexpected: {name}" for name in sorted(got.keys() - want.keys())]
+    problems += [
+        text_diff(want[name], got[name], name)
+        for name in sorted(want.keys() & got.keys())
+        if want[name] != got[name]
+    ]
+    return "\n".join(problems)
+
+
+def assert_same_tree(actual: Path, expected: Path) -> None:
+    """Fail with a readable report unless ``actual`` holds exactly the files of ``expected``."""
+    problems = tree_differences(actual, expected)
+    if problems:
+        pytest.fail(f"{actual} differs from {expected}:\n{problems}", pytrace=False)

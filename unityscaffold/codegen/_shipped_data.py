@@ -1,5 +1,7 @@
-"""Message classes ROS# 2.2.1 ships, as data (generated from the shared reference
-``rossharp-shipped-types.md``, read from siemens/ros-sharp at tag 2.2.1).
+"""Message classes ROS# 2.2.1 ships, as data. Generated: do not edit by hand.
+
+Written by ``scripts/update_shipped_classes.py`` from siemens/ros-sharp at tag 2.2.1
+(``com.siemens.ros-sharp/Runtime/Libraries/RosBridgeClient/MessageTypes/ROS1`` and ``ROS2``).
 
 Per ROS version: C# namespace (the last segment under ``RosSharp.RosBridgeClient.MessageTypes``)
 -> entries ``ros_name`` (class = last segment of the name) or ``ros_name>Class`` (a service's
