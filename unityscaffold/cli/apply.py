@@ -9,7 +9,7 @@ import typer
 
 from unityscaffold.apply.init import init_project
 from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
-from unityscaffold.apply.run import Mode, run
+from unityscaffold.apply.run import Mode, Outcome, run
 from unityscaffold.errors import Exit
 
 ManifestArgument: Path = typer.Argument(
@@ -24,7 +24,7 @@ RosEnvOption: bool = typer.Option(
 JsonOption: bool = typer.Option(False, "--json", help="Print the plan as JSON for scripts.")
 
 
-def _show(outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
+def _show(outcome: Outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
     plan = outcome.plan
     if as_json:
         data = plan_json(plan)

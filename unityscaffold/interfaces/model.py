@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
-from typing import ClassVar, TypeAlias
+from typing import TypeAlias
 
 from unityscaffold.errors import SourceLocation
 
@@ -278,7 +278,7 @@ class ActionSpec(_Named):
     source: str | None = None
     derived: tuple[MessageSpec, ...] = ()
     services: tuple[ServiceSpec, ...] = ()
-    subfolder: ClassVar[str] = "action"
+    subfolder: str = "action"
 
     @property
     def kind(self) -> InterfaceKind:

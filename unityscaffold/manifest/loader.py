@@ -182,12 +182,9 @@ def _top_scene(r: Reader, top: YMap, project_root: Path) -> str | None:
 def _namespace(r: Reader, top: YMap) -> str | None:
     value = r.text(top, "namespace", "a C# namespace such as MyRobot.Ros", spec.NAMESPACE)
     keywords = [p for p in (value or "").split(".") if p and not is_csharp_identifier(p)]
-    if keywords:
-        r.invalid(
-            top.get("namespace"),
-            "a C# namespace such as MyRobot.Ros",  # type: ignore[arg-type]
-            hint=f"'{keywords[0]}' is a C# keyword",
-        )
+    entry = top.get("namespace")
+    if keywords and entry is not None:
+        r.invalid(entry, "a C# namespace such as MyRobot.Ros", hint=f"'{keywords[0]}' is a C# keyword")
         return None
     return value
 

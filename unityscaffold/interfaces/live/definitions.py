@@ -19,7 +19,7 @@ from pathlib import Path
 
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
-from unityscaffold.interfaces.live.model import Discovery
+from unityscaffold.interfaces.live.model import DiscoveredService, DiscoveredTopic, Discovery
 from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 
@@ -155,7 +155,11 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
     own = Registry.load(discovery.dialect, [staging], use_environment=False, use_builtin=False)
     wider = Registry.load(discovery.dialect, [staging, *search_paths])
     warnings: list[str] = []
-    for item in (*discovery.topics, *discovery.services):
+    items: tuple[DiscoveredTopic | DiscoveredService, ...] = (
+        *discovery.topics,
+        *discovery.services,
+    )
+    for item in items:
         reconstructed = bool(item.definition)
         registry = own if reconstructed else wider
         spec = _lookup(registry, item.type, discovery.source)
