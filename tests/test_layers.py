@@ -120,7 +120,7 @@ def private_violations(graph: dict[str, set[str]]) -> set[tuple[str, str]]:
             holder, private_name = private
             if not any(m.startswith(f"{holder}.") for m in modules):
                 holder = holder.rpartition(".")[0]  # a module, not a package
-            if not module.startswith(f"{holder}."):
+            if module != holder and not module.startswith(f"{holder}."):
                 found.add((module, private_name))
     return found
 
@@ -149,6 +149,7 @@ def test_the_checks_catch_a_back_edge_a_peer_edge_and_a_private_import() -> None
         "unityscaffold.cli": {"unityscaffold.__version__", "unityscaffold.unity.scene._quote"},
         "unityscaffold.codegen.layout": {"unityscaffold.apply.files.DesiredFile"},
         "unityscaffold.interfaces.model": set(),
+        "unityscaffold.unity": {"unityscaffold.unity._edits.edit"},
         "unityscaffold.unity._edits": {"unityscaffold.unity.scene._quote"},
         "unityscaffold.unity.scene": {
             "unityscaffold.interfaces.model",
