@@ -22,7 +22,14 @@ from pathlib import Path
 
 from unityscaffold.interfaces.model import Dialect, InterfaceKind
 
-__all__ = ["InterfaceFile", "PackageDir", "SearchRoot", "builtin_root", "discover", "search_roots"]
+__all__ = [
+    "InterfaceFile",
+    "PackageDir",
+    "SearchRoot",
+    "builtin_root",
+    "find_packages",
+    "search_roots",
+]
 
 _ROS1_DISTROS = frozenset(
     [
@@ -177,7 +184,7 @@ def _walk(root: SearchRoot) -> Iterator[Path]:
                 yield candidate
 
 
-def discover(roots: Sequence[SearchRoot]) -> list[PackageDir]:
+def find_packages(roots: Sequence[SearchRoot]) -> list[PackageDir]:
     """Every package under the roots, in priority order (a name may appear more than once)."""
     found: list[PackageDir] = []
     seen: set[Path] = set()
