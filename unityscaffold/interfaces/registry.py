@@ -7,11 +7,11 @@ type does not parse every package on the machine.
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
+from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.interfaces import ros1, ros2
 from unityscaffold.interfaces.model import (
     ActionSpec,
@@ -22,11 +22,13 @@ from unityscaffold.interfaces.model import (
     MessageSpec,
     ServiceSpec,
 )
-from unityscaffold.interfaces.sources import InterfaceFile, SearchRoot, discover, search_roots
+from unityscaffold.interfaces.sources import InterfaceFile, SearchRoot, find_packages, search_roots
 
 __all__ = ["Registry", "TypeNotFound"]
 
-_PARSERS = {
+# text, package, name, path -> the parsed interface
+_Parser = Callable[[str, str, str, str], Interface]
+_PARSERS: dict[Dialect, dict[InterfaceKind, _Parser]] = {
     Dialect.ROS1: {
         InterfaceKind.MSG: ros1.parse_message,
         InterfaceKind.SRV: ros1.parse_service,
@@ -73,7 +75,7 @@ class Registry:
         self._shadowed: dict[_Key, list[InterfaceFile]] = {}
         self._parsed: dict[Path, Interface] = {}
         self._broken: dict[Path, LocatedError] = {}
-        for package in discover(self.roots):
+        for package in find_packages(self.roots):
             for file in package.files():
                 key = _Key(file.kind, file.package, file.name)
                 if key in self._files:
@@ -298,14 +300,12 @@ class Registry:
         for field in message.fields:
             if not field.type.is_message:
                 continue
+            where = field.location or SourceLocation(message.source or message.full_name)
             try:
-                dependency = self.field_type(message, field)
+                with located_at(where):
+                    dependency = self.field_type(message, field)
             except LocatedError as error:
                 problems.extend(error.diagnostics)
-                continue
-            except UserError as error:
-                where = field.location or SourceLocation(message.source or message.full_name)
-                problems.append(Diagnostic(where, error.message, hint=error.hint))
                 continue
             self._visit(dependency, found, path, problems)
         path.pop()
