@@ -9,12 +9,11 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from unityscaffold.codegen import _plan
 from unityscaffold.codegen._actions import build_action, build_wrapper
 from unityscaffold.codegen._build import FileContext, build_message
+from unityscaffold.codegen._classes import ClassEntry, ClassSet, collect_classes, source_name
 from unityscaffold.codegen._identity import Identities
 from unityscaffold.codegen._names import CsClass
-from unityscaffold.codegen._plan import Plan, PlannedClass
 from unityscaffold.codegen.views import View
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
@@ -83,8 +82,8 @@ def _render(view: View) -> str:
     return template_environment().get_template(view.template).render(view=view)
 
 
-def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> View:
-    source = _plan.source_name(item.interface)
+def _view(class_set: ClassSet, ctx: FileContext, ids: Identities, item: ClassEntry) -> View:
+    source = source_name(item.interface)
     if item.role in ("message", "request", "response", "goal", "result", "feedback"):
         assert item.spec is not None
         return build_message(
@@ -95,7 +94,7 @@ def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> 
             source,
             ids.label(item.identity_of),
         )
-    classes = plan.action_classes(item.interface)
+    classes = class_set.action_classes(item.interface)
     if item.role == "action":
         identity = ids.label(item.identity_of)
         return build_action(ctx, classes, item.ros_message_name, source, identity)
@@ -103,7 +102,7 @@ def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> 
         ctx,
         classes,
         item.role,
-        plan.runtime,
+        class_set.runtime,
         item.ros_message_name,
         source,
         ids.label(item.identity_of),
@@ -112,23 +111,23 @@ def _view(plan: Plan, ctx: FileContext, ids: Identities, item: PlannedClass) -> 
 
 def generate(registry: Registry, roots: Iterable[Interface], options: Options) -> Generation:
     """C# for ``roots`` and every type they use; raises ``UserError`` on bad input."""
-    plan = _plan.make_plan(
+    class_set = collect_classes(
         registry, list(roots), options.dialect, options.include_shipped, options.namespace
     )
-    ctx = plan.file_context()
+    ctx = class_set.file_context()
     ids = Identities(registry, options.dialect)
     files: list[GeneratedFile] = []
-    for item in plan.generated:
-        text = _render(_view(plan, ctx, ids, item))
+    for item in class_set.generated:
+        text = _render(_view(class_set, ctx, ids, item))
         files.append(
             GeneratedFile(item.path, text, item.interface.full_name, item.role, item.cs_class)
         )
     skipped = [
         SkippedClass(i.path, i.interface.full_name, i.role, i.cs_class, i.skip_reason or "")
-        for i in plan.skipped
+        for i in class_set.skipped
     ]
     return Generation(
         tuple(sorted(files, key=lambda f: f.path)),
         tuple(sorted(skipped, key=lambda s: s.path)),
-        plan.class_map(),
+        class_set.class_map(),
     )

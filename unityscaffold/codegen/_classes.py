@@ -1,4 +1,4 @@
-"""Which classes one generation makes: units, names, paths, and what ROS# already ships."""
+"""The set of C# classes one ``generate`` call makes: units, names, paths, what ROS# ships."""
 
 from __future__ import annotations
 
@@ -25,7 +25,7 @@ from unityscaffold.interfaces.model import (
 )
 from unityscaffold.interfaces.registry import Registry
 
-__all__ = ["Plan", "PlannedClass", "make_plan", "source_name", "unit_key"]
+__all__ = ["ClassEntry", "ClassSet", "collect_classes", "source_name", "unit_key"]
 
 _ACTION_ROLES = (
     "goal",
@@ -49,11 +49,10 @@ _WRAPPER_DEPENDENCIES = {
     Dialect.ROS1: ("std_msgs/Header", "actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"),
     Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus"),
 }
-_FOLDER = {"msg": "msg", "srv": "srv", "action": "action"}
 
 
 @dataclass(frozen=True, slots=True)
-class PlannedClass:
+class ClassEntry:
     """One C# class: the unit (message, service or action) it belongs to and its role there."""
 
     interface: Interface
@@ -167,11 +166,11 @@ def _owner(registry: Registry, part: MessageSpec) -> Interface | None:
     return registry.get(part.owner)
 
 
-class Plan:
-    """Every class of one generation, named, placed, and marked generated or skipped."""
+class ClassSet:
+    """Every class of one ``generate`` call, named, placed, and marked generated or skipped."""
 
     def __init__(
-        self, dialect: Dialect, root: str, custom_namespace: bool, items: list[PlannedClass]
+        self, dialect: Dialect, root: str, custom_namespace: bool, items: list[ClassEntry]
     ) -> None:
         self.dialect = dialect
         self.root = root
@@ -206,11 +205,11 @@ class Plan:
             )
 
     @property
-    def generated(self) -> list[PlannedClass]:
+    def generated(self) -> list[ClassEntry]:
         return [i for i in self.items if i.skip_reason is None]
 
     @property
-    def skipped(self) -> list[PlannedClass]:
+    def skipped(self) -> list[ClassEntry]:
         return [i for i in self.items if i.skip_reason is not None]
 
     def class_of(self, full_name: str, used_at: SourceLocation | None) -> CsClass:
@@ -247,19 +246,19 @@ def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> str:
     return {v: k for k, v in _ROLE_SUFFIX.items()}[suffix]
 
 
-def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
+def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
     segment = namespace_segment(unit.package)
     namespace = f"{root}.{segment}"
 
-    def planned(
+    def entry(
         role: str,
         spec: MessageSpec | None,
         name: str,
         ros_name: str,
         folder: str,
         identity: Interface,
-    ) -> PlannedClass:
-        return PlannedClass(
+    ) -> ClassEntry:
+        return ClassEntry(
             unit,
             role,
             spec,
@@ -270,12 +269,12 @@ def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
         )
 
     if isinstance(unit, MessageSpec):
-        return [planned("message", unit, class_name(unit.name), unit.full_name, "msg", unit)]
+        return [entry("message", unit, class_name(unit.name), unit.full_name, "msg", unit)]
     base = class_name(unit.name)
     if isinstance(unit, ServiceSpec):
         return [
-            planned("request", unit.request, base + "Request", unit.full_name, "srv", unit.request),
-            planned(
+            entry("request", unit.request, base + "Request", unit.full_name, "srv", unit.request),
+            entry(
                 "response", unit.response, base + "Response", unit.full_name, "srv", unit.response
             ),
         ]
@@ -289,7 +288,7 @@ def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
             derived.get(suffix) or unit if unit.dialect is Dialect.ROS1 else unit
         )
         items.append(
-            planned(
+            entry(
                 role,
                 parts.get(role),
                 base + suffix,
@@ -301,7 +300,7 @@ def _classes_of(unit: Interface, root: str) -> list[PlannedClass]:
     return items
 
 
-def _skip_reason(item: PlannedClass, dialect: Dialect, include_shipped: bool) -> str | None:
+def _skip_reason(item: ClassEntry, dialect: Dialect, include_shipped: bool) -> str | None:
     key = (item.cs_class.namespace.rsplit(".", 1)[-1], item.cs_class.name)
     if dialect is Dialect.ROS1 and ROS1_HANDWRITTEN.get(key) == item.ros_message_name:
         return f"ROS# hand-writes {item.cs_class.full_name} (never generated)"
@@ -319,8 +318,8 @@ def _skip_reason(item: PlannedClass, dialect: Dialect, include_shipped: bool) ->
     return f"ROS# ships {item.cs_class.full_name}"
 
 
-def _check_unique(items: list[PlannedClass]) -> None:
-    seen: dict[CsClass, PlannedClass] = {}
+def _check_unique(items: list[ClassEntry]) -> None:
+    seen: dict[CsClass, ClassEntry] = {}
     for item in items:
         other = seen.setdefault(item.cs_class, item)
         if other is not item:
@@ -332,23 +331,23 @@ def _check_unique(items: list[PlannedClass]) -> None:
             )
 
 
-def make_plan(
+def collect_classes(
     registry: Registry,
     roots: list[Interface],
     dialect: Dialect,
     include_shipped: bool,
     namespace: str | None,
-) -> Plan:
+) -> ClassSet:
     if namespace is not None:
         validate_namespace(namespace)
     extra = _WRAPPER_DEPENDENCIES[dialect] if namespace is None else ()
-    items: list[PlannedClass] = []
+    items: list[ClassEntry] = []
     for unit in _units(registry, roots, extra):
         items += _classes_of(unit, namespace or ROSSHARP_ROOT_NAMESPACE)
     _check_unique(items)
     if namespace is None:
         items = [
-            PlannedClass(
+            ClassEntry(
                 i.interface,
                 i.role,
                 i.spec,
@@ -360,4 +359,4 @@ def make_plan(
             )
             for i in items
         ]
-    return Plan(dialect, namespace or ROSSHARP_ROOT_NAMESPACE, namespace is not None, items)
+    return ClassSet(dialect, namespace or ROSSHARP_ROOT_NAMESPACE, namespace is not None, items)
