@@ -8,7 +8,8 @@ in a file it carries ``Diagnostic`` values that render as ``path:line:col: messa
 from __future__ import annotations
 
 import enum
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 __all__ = [
@@ -20,6 +21,7 @@ __all__ = [
     "Severity",
     "SourceLocation",
     "UserError",
+    "located_at",
 ]
 
 
@@ -126,13 +128,6 @@ class LocatedError(UserError):
     ) -> LocatedError:
         return cls([Diagnostic(location, message, expected=expected, hint=hint)])
 
-    @classmethod
-    def wrap(cls, location: SourceLocation, error: UserError) -> LocatedError:
-        """``error`` located at ``location``, unless it already points at its own place."""
-        if isinstance(error, LocatedError):
-            return error
-        return cls.at(location, error.message, hint=error.hint)
-
     @property
     def location(self) -> SourceLocation:
         return self.diagnostics[0].location
@@ -146,6 +141,21 @@ class LocatedError(UserError):
 
 class InternalError(ScaffoldError):
     """A bug in unityscaffold itself: the CLI asks the user to report it."""
+
+
+@contextmanager
+def located_at(location: SourceLocation) -> Iterator[None]:
+    """Report a ``UserError`` raised inside at ``location``, unless it already has a place.
+
+    The one way a caller ties an error from a lower layer, which knows nothing of the file the
+    user wrote, to the place in that file that led to it (a manifest key, an interface line).
+    """
+    try:
+        yield
+    except LocatedError:
+        raise
+    except UserError as error:
+        raise LocatedError.at(location, error.message, hint=error.hint) from None
 
 
 @dataclass(slots=True)

@@ -20,7 +20,7 @@ from unityscaffold.codegen.scripts import (
     SubscriberScript,
     render_script,
 )
-from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.errors import LocatedError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
@@ -55,10 +55,8 @@ class CodePlan:
 
 def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSpec | ServiceSpec:
     where = item.locations.of("type")
-    try:
+    with located_at(where):
         found = registry.get(item.type)
-    except UserError as error:
-        raise LocatedError.wrap(where, error) from None
     if not isinstance(found, kind):
         wanted = "a message" if kind is MessageSpec else "a service"
         raise LocatedError.at(

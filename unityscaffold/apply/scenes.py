@@ -16,7 +16,7 @@ from pathlib import Path
 from unityscaffold.apply.code import CodePlan
 from unityscaffold.apply.lock import LockComponent, LockFile
 from unityscaffold.apply.rossharp import STOCK_SCRIPTS, RosSharp
-from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError
+from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import Component, Manifest, ObjectPath, StructValue
 from unityscaffold.unity import Enum, ObjectRef, SceneDocument, ScriptRef
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
@@ -53,10 +53,8 @@ class _SceneEditor:
         self.wanted: set[tuple[str, str]] = set()
 
     def gameobject(self, path: str, create: bool, where: SourceLocation):
-        try:
+        with located_at(where):
             return self.doc.ensure_gameobject(path, create=create)
-        except UserError as error:
-            raise LocatedError.wrap(where, error) from None
 
     def attach(
         self,
@@ -71,10 +69,8 @@ class _SceneEditor:
         self.wanted.add((path, script.guid))
         existed = self.doc.find_component(go, script.guid, script.file_id) is not None
         before = self.doc.text()
-        try:
+        with located_at(where):
             component = self.doc.ensure_component(go, script, fields)
-        except UserError as error:
-            raise LocatedError.wrap(where, error) from None
         name = script.class_name or script.guid
         if not existed:
             self.plan.actions.append(f"add {name} to {path}")
@@ -138,7 +134,7 @@ class _Context:
 
 def _component_script(ctx: _Context, item: Component) -> ScriptRef:
     where = item.locations.of("script")
-    try:
+    with located_at(where):
         if item.script.endswith(".cs"):
             return script_ref_for_file(ctx.manifest.project_root / item.script)
         found = ctx.planned(item.script) or find_script(
@@ -146,8 +142,6 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
         )
         if found is None and ctx.rossharp.knows(item.script):
             found = ctx.rossharp.script(item.script)
-    except UserError as error:
-        raise LocatedError.wrap(where, error) from None
     if found is None:
         names = sorted({info.class_name for info in ctx.scripts.values()})
         close = difflib.get_close_matches(item.script, names, n=3)
@@ -163,10 +157,8 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
 def _reference(
     ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath, where: SourceLocation
 ) -> ObjectRef:
-    try:
+    with located_at(where):
         go = doc.find_gameobject(value.path)
-    except UserError as error:
-        raise LocatedError.wrap(where, error) from None
     wanted = value.component or ("Transform" if name.lower().endswith("transform") else None)
     if wanted is None:
         return ObjectRef(go.file_id)
@@ -262,10 +254,8 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
             f"scene {relative} not found in the Unity project {manifest.project_root}",
             hint="scene paths are relative to the project, e.g. Assets/Scenes/Main.unity",
         )
-    try:
+    with located_at(where):
         return SceneDocument.load(path)
-    except UserError as error:
-        raise LocatedError.wrap(where, error) from None
 
 
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
@@ -299,10 +289,8 @@ def plan_scenes(
         doc = _load(manifest, relative, locations[relative])
         before = doc.text()
         plan = ScenePlan(manifest.project_root / relative, relative, before, before)
-        try:
+        with located_at(locations[relative]):
             _edit_scene(ctx, plan, doc, lock)
-        except UserError as error:
-            raise LocatedError.wrap(locations[relative], error) from None
         problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
         if problems:
             raise LocatedError(problems)

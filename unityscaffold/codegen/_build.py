@@ -17,7 +17,7 @@ from unityscaffold.codegen.views import (
     SizeCheck,
     doc_lines,
 )
-from unityscaffold.errors import LocatedError, SourceLocation, UserError
+from unityscaffold.errors import LocatedError, SourceLocation, located_at
 from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
 
 __all__ = ["FileContext", "build_message", "message_references"]
@@ -131,10 +131,8 @@ def _check_names(spec: MessageSpec, class_name: str) -> None:
     items: list[Constant | Field] = [*spec.constants, *spec.fields]
     for item in items:
         where = item.location or _where(spec)
-        try:
+        with located_at(where):
             escape_identifier(item.name)
-        except UserError as exc:
-            raise LocatedError.at(where, exc.message, hint=exc.hint) from None
         if item.name in seen:
             raise LocatedError.at(
                 where,
