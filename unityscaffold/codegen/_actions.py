@@ -14,7 +14,8 @@ from dataclasses import dataclass
 
 from unityscaffold.codegen import literals
 from unityscaffold.codegen._build import FileContext
-from unityscaffold.codegen._names import CsClass, References
+from unityscaffold.codegen._references import References
+from unityscaffold.codegen.naming import CsClass
 from unityscaffold.codegen.views import ActionView, ActionWrapperView, FileHeader
 from unityscaffold.interfaces.model import Dialect
 

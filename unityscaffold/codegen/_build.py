@@ -6,8 +6,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from unityscaffold.codegen import literals
-from unityscaffold.codegen._names import CsClass, KnownClasses, References
-from unityscaffold.codegen.naming import escape_identifier
+from unityscaffold.codegen._references import KnownClasses, References
+from unityscaffold.codegen.naming import CsClass, escape_identifier
 from unityscaffold.codegen.types import ROS1_TIME_TYPES, primitive_type
 from unityscaffold.codegen.views import (
     ConstantView,

@@ -7,11 +7,14 @@ from pathlib import PurePath
 
 from unityscaffold.codegen._actions import ActionClasses, RuntimeTypes
 from unityscaffold.codegen._build import FileContext
-from unityscaffold.codegen._names import ROSSHARP_MESSAGE, CsClass, KnownClasses, rossharp_class
+from unityscaffold.codegen._references import KnownClasses
 from unityscaffold.codegen.naming import (
+    ROSSHARP_MESSAGE,
     ROSSHARP_ROOT_NAMESPACE,
+    CsClass,
     class_name,
     namespace_segment,
+    rossharp_class,
     validate_namespace,
 )
 from unityscaffold.codegen.shipped import ROS1_HANDWRITTEN, shipped_classes

@@ -1,4 +1,4 @@
-"""C# naming rules for ROS# code: namespaces from package names, class names, identifiers.
+"""C# names for ROS# code: classes (``CsClass``), namespaces from package names, identifiers.
 
 Small pure functions; the package rule is ROS#'s ``MsgAutoGenUtilities.ResolvePackageName``.
 """
@@ -6,21 +6,49 @@ Small pure functions; the package rule is ROS#'s ``MsgAutoGenUtilities.ResolvePa
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 from unityscaffold.errors import UserError
 
 __all__ = [
     "CSHARP_KEYWORDS",
+    "ROSSHARP_MESSAGE",
     "ROSSHARP_ROOT_NAMESPACE",
+    "CsClass",
     "class_name",
     "escape_identifier",
     "is_identifier",
     "namespace_segment",
     "pascal_case",
+    "rossharp_class",
     "validate_namespace",
 ]
 
+
+@dataclass(frozen=True, slots=True, order=True)
+class CsClass:
+    """A C# class: its namespace (full) and name."""
+
+    namespace: str
+    name: str
+
+    @property
+    def full_name(self) -> str:
+        return f"{self.namespace}.{self.name}"
+
+    @property
+    def qualified(self) -> str:
+        return f"global::{self.full_name}"
+
+
 ROSSHARP_ROOT_NAMESPACE = "RosSharp.RosBridgeClient.MessageTypes"
+ROSSHARP_MESSAGE = CsClass("RosSharp.RosBridgeClient", "Message")
+
+
+def rossharp_class(segment: str, name: str) -> CsClass:
+    """A class in ROS#'s own message namespace (its runtime assembly)."""
+    return CsClass(f"{ROSSHARP_ROOT_NAMESPACE}.{segment}", name)
+
 
 _RESERVED = frozenset(
     """

@@ -1,4 +1,4 @@
-"""Which C# class each ROS type becomes, and how one generated file refers to another class.
+"""How one generated file names the classes it uses: simple names, usings or ``global::``.
 
 Usings go inside the namespace declaration, so an imported class wins over anything in the
 enclosing ``RosSharp.RosBridgeClient`` namespace or the global namespace (a user's own
@@ -12,33 +12,9 @@ from collections import defaultdict
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from unityscaffold.codegen.naming import ROSSHARP_ROOT_NAMESPACE
+from unityscaffold.codegen.naming import CsClass
 
-__all__ = ["CsClass", "KnownClasses", "References"]
-
-
-@dataclass(frozen=True, slots=True, order=True)
-class CsClass:
-    """A C# class: its namespace (full) and name."""
-
-    namespace: str
-    name: str
-
-    @property
-    def full_name(self) -> str:
-        return f"{self.namespace}.{self.name}"
-
-    @property
-    def qualified(self) -> str:
-        return f"global::{self.full_name}"
-
-
-ROSSHARP_MESSAGE = CsClass("RosSharp.RosBridgeClient", "Message")
-
-
-def rossharp_class(segment: str, name: str) -> CsClass:
-    """A class in ROS#'s own message namespace (its runtime assembly)."""
-    return CsClass(f"{ROSSHARP_ROOT_NAMESPACE}.{segment}", name)
+__all__ = ["KnownClasses", "References"]
 
 
 @dataclass(slots=True)
