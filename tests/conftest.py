@@ -12,12 +12,11 @@ import sys
 from pathlib import Path
 
 import pytest
-from helpers import IN_CI, require  # noqa: F401 (fixtures below use require)
+from helpers import SYSTEM_PYTHON, require
 
 REPO = Path(__file__).resolve().parent.parent
 ROS1_SHARE = Path("/usr/share")
 ROS2_SHARE = Path(sys.prefix) / "share"
-SYSTEM_PYTHON = Path("/usr/bin/python3")
 
 
 @pytest.fixture(scope="session")

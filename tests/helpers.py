@@ -15,6 +15,8 @@ import pytest
 from unityscaffold.cli import main
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
+#: Debian's Python, the one that sees Debian's ROS 1 packages (genmsg, rospy).
+SYSTEM_PYTHON = Path("/usr/bin/python3")
 UPDATE_VARIABLE = "UNITYSCAFFOLD_UPDATE"
 
 
@@ -100,8 +102,11 @@ def tree_differences(actual: Path, expected: Path) -> str:
     return "\n".join(problems)
 
 
-def assert_same_tree(actual: Path, expected: Path) -> None:
+UPDATE_HINT = f"if the change is intended, rerun with {UPDATE_VARIABLE}=1 and review git diff"
+
+
+def assert_same_tree(actual: Path, expected: Path, hint: str = UPDATE_HINT) -> None:
     """Fail with a readable report unless ``actual`` holds exactly the files of ``expected``."""
     problems = tree_differences(actual, expected)
     if problems:
-        pytest.fail(f"{actual} differs from {expected}:\n{problems}", pytrace=False)
+        pytest.fail(f"{actual} differs from {expected} ({hint}):\n{problems}", pytrace=False)

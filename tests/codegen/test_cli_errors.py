@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from conftest import DATA
+from codegen_helpers import DATA
 
 from unityscaffold.cli import main
 

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from conftest import Compiled, compile_cs, generate_data, write_tree
+from codegen_helpers import generate_data, write_tree
+from csharp import Compiled, compile_cs
 
 from unityscaffold.codegen import Generation
 from unityscaffold.interfaces.model import Dialect

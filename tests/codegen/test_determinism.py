@@ -7,7 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from conftest import DATA
+from codegen_helpers import DATA
 
 
 def _run(seed: str, out: Path) -> dict[str, bytes]:

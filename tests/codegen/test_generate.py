@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from conftest import generate_data
+from codegen_helpers import generate_data
 
 from unityscaffold.codegen import Generation
 from unityscaffold.codegen.views import doc_lines

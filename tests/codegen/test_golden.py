@@ -1,17 +1,20 @@
 """Whole generated trees, held fixed and compared byte for byte (and compiled).
 
-Regenerate after an intended change, then review the diff:
+A mismatch is reported as a unified diff per file. Regenerate after an intended change, then
+review the diff:
 
-    UPDATE_GOLDEN=1 python3 -m pytest tests/codegen/test_golden.py
+    UNITYSCAFFOLD_UPDATE=1 python3 -m pytest tests/codegen/test_golden.py
 """
 
 from __future__ import annotations
 
-import os
+import shutil
 from pathlib import Path
 
 import pytest
-from conftest import DATA, GOLDEN, Compiled, compile_cs
+from codegen_helpers import DATA, GOLDEN
+from csharp import Compiled, compile_cs
+from helpers import assert_same_tree, updating
 
 from unityscaffold.cli import main
 
@@ -30,14 +33,6 @@ CASES = {
 }
 
 
-def _tree(root: Path) -> dict[str, bytes]:
-    return {
-        p.relative_to(root).as_posix(): p.read_bytes()
-        for p in sorted(root.rglob("*"))
-        if p.is_file()
-    }
-
-
 def _generate(case: str, tmp_path: Path) -> Path:
     out = tmp_path / "out"
     assert main(["msgs", "gen", *CASES[case], "--out", str(out)]) == 0
@@ -48,16 +43,10 @@ def _generate(case: str, tmp_path: Path) -> Path:
 def test_generated_tree_matches_golden(case: str, tmp_path: Path) -> None:
     out = _generate(case, tmp_path)
     golden = GOLDEN / case
-    if os.environ.get("UPDATE_GOLDEN"):
-        for old in sorted(golden.rglob("*"), reverse=True) if golden.exists() else []:
-            old.unlink() if old.is_file() else old.rmdir()
-        for name, data in _tree(out).items():
-            (golden / name).parent.mkdir(parents=True, exist_ok=True)
-            (golden / name).write_bytes(data)
-    expected, actual = _tree(golden), _tree(out)
-    assert sorted(actual) == sorted(expected)
-    for name in expected:
-        assert actual[name] == expected[name], f"{name} differs from {golden / name}"
+    if updating():
+        shutil.rmtree(golden, ignore_errors=True)
+        shutil.copytree(out, golden)
+    assert_same_tree(out, golden)
 
 
 @pytest.mark.parametrize("case", ["ros1", "ros2"])

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from conftest import generate_data
+from codegen_helpers import generate_data
 
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.interfaces.model import Dialect

@@ -12,13 +12,13 @@ import subprocess
 import time
 import xmlrpc.client
 from collections.abc import Iterator
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import pytest
+from helpers import SYSTEM_PYTHON, require
 
-from tests.conftest import SYSTEM_PYTHON, require
+from tests.live.helpers_live import Ros1System, free_port
 
 DATA = Path(__file__).parent / "data"
 TEST_PACKAGE = DATA / "scaffold_test_msgs"
@@ -48,12 +48,6 @@ def _time_limit() -> Iterator[None]:
     signal.signal(signal.SIGALRM, previous)
 
 
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
 @pytest.fixture(scope="session")
 def genmsg_truth(genmsg_python: Path, ros1_share: Path) -> dict[str, Any]:
     """genmsg's md5sum and full text of TYPES (services: of both halves too)."""
@@ -65,14 +59,6 @@ def genmsg_truth(genmsg_python: Path, ros1_share: Path) -> dict[str, Any]:
         check=True,
     )
     return dict(json.loads(output.stdout))
-
-
-@dataclass(frozen=True)
-class Ros1System:
-    url: str
-    env: dict[str, str]
-    truth: dict[str, Any]
-    ghost_topic: str
 
 
 def _start(argv: list[str], env: dict[str, str], log: Path) -> subprocess.Popen[bytes]:

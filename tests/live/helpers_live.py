@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import hashlib
+import socket
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -20,6 +22,23 @@ topics:
   - {name: /imu, type: sensor_msgs/Imu, direction: subscribe, gameobject: Robot}  # hand-written
 services: []
 """
+
+
+@dataclass(frozen=True)
+class Ros1System:
+    """A running ROS 1 master with the test node (see the ``ros1_system`` fixture)."""
+
+    url: str
+    env: dict[str, str]
+    truth: dict[str, Any]
+    ghost_topic: str
+
+
+def free_port() -> int:
+    """A TCP port on loopback that nothing listens on right now."""
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
 
 
 @dataclass(frozen=True)

@@ -9,8 +9,14 @@ from pathlib import Path
 
 import pytest
 
-from tests.live.conftest import Ros1System, free_port
-from tests.live.helpers_live import MANIFEST, assert_clean_failure, run_cli, snapshot
+from tests.live.helpers_live import (
+    MANIFEST,
+    Ros1System,
+    assert_clean_failure,
+    free_port,
+    run_cli,
+    snapshot,
+)
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
@@ -210,7 +216,7 @@ def test_discovered_definitions_generate_compiling_csharp(
 ) -> None:
     """The point of discovery: C# for the robot's types without its workspace. The custom
     package's folder is on no search path; its types come from the cache alone."""
-    from tests.codegen.conftest import MCS_FLAGS, STUB
+    from csharp import MCS_FLAGS, ROSSHARP_STUB
 
     run = run_cli(
         capsys,
@@ -246,7 +252,7 @@ def test_discovered_definitions_generate_compiling_csharp(
     sources = sorted(out.rglob("*.cs"))
     assert any(p.name == "Reading.cs" for p in sources)
     done = subprocess.run(
-        [mcs, *MCS_FLAGS, f"-out:{project / 'robot.dll'}", str(STUB), *map(str, sources)],
+        [mcs, *MCS_FLAGS, f"-out:{project / 'robot.dll'}", str(ROSSHARP_STUB), *map(str, sources)],
         capture_output=True,
         text=True,
         timeout=120,

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.live.conftest import Ros1System
+from tests.live.helpers_live import Ros1System
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.live import Direction, NameFilter, discover, list_live_types
@@ -112,7 +112,7 @@ def test_a_custom_service_is_checked_against_a_local_srv(
 
 
 def test_unreachable_master_is_a_clear_error() -> None:
-    from tests.live.conftest import free_port
+    from tests.live.helpers_live import free_port
 
     url = f"http://127.0.0.1:{free_port()}"
     with pytest.raises(UserError, match=f"no ROS master at {url} \\(connection refused\\)"):

@@ -10,9 +10,8 @@ from typing import Any
 
 import pytest
 
-from tests.live.conftest import free_port
 from tests.live.fake_rosbridge import FakeRosbridge, running
-from tests.live.helpers_live import MANIFEST, assert_clean_failure, run_cli, snapshot
+from tests.live.helpers_live import MANIFEST, assert_clean_failure, free_port, run_cli, snapshot
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.live import Direction, NameFilter, discover, list_live_types

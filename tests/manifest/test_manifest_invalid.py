@@ -4,23 +4,22 @@ Each ``invalid/NAME.yaml`` is loaded as ``robot.yaml`` from a scratch folder; it
 error is compared with ``invalid/NAME.expected``. After changing messages on purpose, rewrite the
 snapshots and review their diff::
 
-    UNITYSCAFFOLD_UPDATE_SNAPSHOTS=1 python -m pytest tests/manifest/test_manifest_invalid.py
+    UNITYSCAFFOLD_UPDATE=1 python3 -m pytest tests/manifest/test_manifest_invalid.py
 """
 
 from __future__ import annotations
 
-import os
 import shutil
 from pathlib import Path
 
 import pytest
+from helpers import UPDATE_HINT, text_diff, updating
 
 from unityscaffold.errors import Exit, LocatedError, ScaffoldError, UserError
 from unityscaffold.manifest import load_manifest
 
 INVALID = Path(__file__).parent / "invalid"
 CASES = sorted(INVALID.glob("*.yaml"))
-UPDATE = os.environ.get("UNITYSCAFFOLD_UPDATE_SNAPSHOTS") == "1"
 
 
 def _tree(root: Path) -> list[tuple[str, int]]:
@@ -42,10 +41,11 @@ def test_invalid_manifest_gives_its_expected_message(
     assert "Traceback" not in rendered and "ruamel" not in rendered
     assert _tree(tmp_path) == before, "loading a manifest must write nothing"
     expected = case.with_suffix(".expected")
-    if UPDATE:
+    if updating():
         expected.write_text(rendered, encoding="utf-8")
     assert expected.exists(), f"no snapshot {expected.name}; see this module's docstring"
-    assert rendered == expected.read_text(encoding="utf-8")
+    snapshot = expected.read_text(encoding="utf-8")
+    assert rendered == snapshot, f"{UPDATE_HINT}\n" + text_diff(snapshot, rendered, expected.name)
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.stem for c in CASES])
