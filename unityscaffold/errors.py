@@ -8,7 +8,7 @@ in a file it carries ``Diagnostic`` values that render as ``path:line:col: messa
 from __future__ import annotations
 
 import enum
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 
@@ -160,20 +160,31 @@ def located_at(location: SourceLocation) -> Iterator[None]:
 
 @dataclass(slots=True)
 class DiagnosticSink:
-    """Collects diagnostics so that every problem is reported before stopping."""
+    """Collects the diagnostics of one input so that every problem is reported before stopping.
+
+    The one collector of the manifest reader and both interface grammars.
+    """
 
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
     def add(self, diagnostic: Diagnostic) -> None:
         self.diagnostics.append(diagnostic)
 
-    def extend(self, diagnostics: Sequence[Diagnostic]) -> None:
-        self.diagnostics.extend(diagnostics)
+    def error(
+        self,
+        location: SourceLocation,
+        message: str,
+        *,
+        expected: str | None = None,
+        hint: str | None = None,
+    ) -> None:
+        self.add(Diagnostic(location, message, expected=expected, hint=hint))
 
     @property
     def errors(self) -> list[Diagnostic]:
         return [d for d in self.diagnostics if d.severity is Severity.ERROR]
 
     def raise_if_errors(self) -> None:
+        """Stop with every error collected so far, in the order they were found."""
         if self.errors:
             raise LocatedError(self.errors)

@@ -14,9 +14,10 @@ from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 
-from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation
+from unityscaffold.errors import DiagnosticSink, LocatedError, SourceLocation
 from unityscaffold.interfaces._comments import CommentTracker, clean_block
 from unityscaffold.interfaces.model import (
     ROS1_BUILTINS,
@@ -54,28 +55,17 @@ _INT_BITS = {
 
 @dataclass(frozen=True, slots=True)
 class _Line:
+    path: str
     number: int
     text: str
 
+    def at(self, col: int) -> SourceLocation:
+        """Column ``col`` of this line, shown with the line under a diagnostic."""
+        return SourceLocation(self.path, self.number, col, self.text)
 
-def _numbered(text: str, first: int = 1) -> list[_Line]:
-    return [_Line(first + i, line) for i, line in enumerate(text.split("\n"))]
 
-
-class _Collector:
-    """Diagnostics of one file, so that every bad line is reported, not just the first."""
-
-    def __init__(self, path: str) -> None:
-        self.path = path
-        self.diagnostics: list[Diagnostic] = []
-
-    def error(self, line: _Line, col: int, message: str, **extra: str) -> None:
-        where = SourceLocation(self.path, line.number, col, line.text)
-        self.diagnostics.append(Diagnostic(where, message, **extra))
-
-    def raise_if_any(self) -> None:
-        if self.diagnostics:
-            raise LocatedError(self.diagnostics)
+def _numbered(text: str, path: str) -> list[_Line]:
+    return [_Line(path, i + 1, line) for i, line in enumerate(text.split("\n"))]
 
 
 def _column_of(line: str, token: str, start: int = 0) -> int:
@@ -124,12 +114,11 @@ def _type_ref(resolved: str) -> TypeRef:
     return TypeRef(base, ArrayKind.FIXED, int(rest[:-1]))
 
 
-def _field(line: _Line, code: str, package: str, out: _Collector) -> Field | None:
+def _field(line: _Line, code: str, package: str, out: DiagnosticSink) -> Field | None:
     tokens = [t for t in (part.strip() for part in code.split(" ")) if t]
     if len(tokens) != 2:
         out.error(
-            line,
-            _column_of(line.text, code[:1]),
+            line.at(_column_of(line.text, code[:1])),
             "invalid field declaration",
             expected="'TYPE NAME' separated by spaces",
             hint="genmsg splits on spaces only; a tab between type and name is an error"
@@ -140,24 +129,21 @@ def _field(line: _Line, code: str, package: str, out: _Collector) -> Field | Non
     token, name = tokens
     if not _BASE_NAME.match(name):
         out.error(
-            line,
-            _column_of(line.text, name, line.text.find(token) + len(token)),
+            line.at(_column_of(line.text, name, line.text.find(token) + len(token))),
             f"'{name}' is not a legal field name",
             expected="a letter followed by letters, digits or '_'",
         )
         return None
     if not _is_valid_type(token):
         out.error(
-            line,
-            _column_of(line.text, token),
+            line.at(_column_of(line.text, token)),
             f"'{token}' is not a legal field type",
             expected="TYPE, TYPE[] or TYPE[N] with TYPE a builtin or pkg/Name",
         )
         return None
     if token.count("[") > 1:
         out.error(
-            line,
-            _column_of(line.text, token),
+            line.at(_column_of(line.text, token)),
             f"'{token}' has more than one dimension",
             expected="a one-dimensional array such as T[] or T[N]",
         )
@@ -186,14 +172,13 @@ def _constant_value(type_name: str, text: str) -> Scalar:
     return value
 
 
-def _constant(line: _Line, code: str, out: _Collector) -> Constant | None:
+def _constant(line: _Line, code: str, out: DiagnosticSink) -> Constant | None:
     raw = line.text
     tokens = [t for t in (part.strip() for part in code.split(" ")) if t]
     type_name = tokens[0]
     if type_name not in ROS1_PRIMITIVES:
         out.error(
-            line,
-            _column_of(raw, type_name),
+            line.at(_column_of(raw, type_name)),
             f"'{type_name}' is not a legal constant type",
             expected="one of " + ", ".join(ROS1_PRIMITIVES),
         )
@@ -206,8 +191,7 @@ def _constant(line: _Line, code: str, out: _Collector) -> Constant | None:
         parts = [p.strip() for p in " ".join(tokens[1:]).split("=")]
         if len(parts) != 2:
             out.error(
-                line,
-                _column_of(raw, "="),
+                line.at(_column_of(raw, "=")),
                 "a constant needs exactly one '='",
                 expected="'TYPE NAME=VALUE'",
             )
@@ -215,8 +199,7 @@ def _constant(line: _Line, code: str, out: _Collector) -> Constant | None:
         name, value_text = parts
     if not _BASE_NAME.match(name):
         out.error(
-            line,
-            _column_of(raw, name or "="),
+            line.at(_column_of(raw, name or "=")),
             f"'{name}' is not a legal constant name",
             expected="a letter followed by letters, digits or '_'",
         )
@@ -225,8 +208,7 @@ def _constant(line: _Line, code: str, out: _Collector) -> Constant | None:
         value = _constant_value(type_name, value_text)
     except (ValueError, SyntaxError) as exc:
         out.error(
-            line,
-            _column_of(raw, "=") + 1,
+            line.at(_column_of(raw, "=") + 1),
             f"invalid {type_name} constant value '{value_text.strip()}': {exc}",
             expected=f"a {type_name} literal",
         )
@@ -237,7 +219,11 @@ def _constant(line: _Line, code: str, out: _Collector) -> Constant | None:
 # --- messages -------------------------------------------------------------------------------
 
 
-def _parse_lines(lines: list[_Line], package: str, out: _Collector):
+def _parse_lines(
+    lines: list[_Line], package: str, out: DiagnosticSink
+) -> tuple[
+    list[tuple[Field, list[str], _Line]], list[tuple[Constant, list[str], _Line]], CommentTracker
+]:
     fields: list[tuple[Field, list[str], _Line]] = []
     constants: list[tuple[Constant, list[str], _Line]] = []
     docs = CommentTracker()
@@ -262,13 +248,14 @@ def _parse_lines(lines: list[_Line], package: str, out: _Collector):
     return fields, constants, docs
 
 
-def _check_duplicates(items, kind: str, out: _Collector) -> None:
+def _check_duplicates(
+    items: Sequence[tuple[Field | Constant, list[str], _Line]], kind: str, out: DiagnosticSink
+) -> None:
     seen: set[str] = set()
     for item, _, line in items:
         if item.name in seen:
             out.error(
-                line,
-                _column_of(line.text, item.name),
+                line.at(_column_of(line.text, item.name)),
                 f"duplicate {kind} name '{item.name}'",
                 hint=f"each {kind} of a message needs its own name",
             )
@@ -281,11 +268,11 @@ def _message_from_lines(
     package: str,
     name: str,
     path: str,
+    out: DiagnosticSink,
     *,
     subfolder: str = "msg",
     owner: str | None = None,
-) -> tuple[MessageSpec, list[Diagnostic]]:
-    out = _Collector(path)
+) -> MessageSpec:
     fields, constants, docs = _parse_lines(lines, package, out)
     _check_duplicates(fields, "field", out)
     _check_duplicates(constants, "constant", out)
@@ -313,24 +300,24 @@ def _message_from_lines(
         subfolder=subfolder,
         owner=owner,
     )
-    return spec, out.diagnostics
+    return spec
 
 
 def parse_message(text: str, package: str, name: str, path: str = "<string>") -> MessageSpec:
     """Parse a ``.msg`` text; raises ``LocatedError`` listing every bad line."""
-    spec, problems = _message_from_lines(_numbered(text), text, package, name, path)
-    if problems:
-        raise LocatedError(problems)
+    out = DiagnosticSink()
+    spec = _message_from_lines(_numbered(text, path), text, package, name, path, out)
+    out.raise_if_errors()
     return spec
 
 
-def _split_sections(text: str) -> list[tuple[list[_Line], str]]:
+def _split_sections(text: str, path: str) -> list[tuple[list[_Line], str]]:
     """Split at every line starting with '---' (genmsg and genaction are that lenient).
 
     Each section's text is its lines each followed by '\\n', as both tools build it.
     """
     sections: list[tuple[list[_Line], list[str]]] = [([], [])]
-    for line in _numbered(text):
+    for line in _numbered(text, path):
         if line.text.startswith("---"):
             sections.append(([], []))
         else:
@@ -341,25 +328,33 @@ def _split_sections(text: str) -> list[tuple[list[_Line], str]]:
 
 def parse_service(text: str, package: str, name: str, path: str = "<string>") -> ServiceSpec:
     """Parse a ``.srv`` text into ``<Name>Request`` and ``<Name>Response`` messages."""
-    sections = _split_sections(text)
+    sections = _split_sections(text, path)
     request_lines, request_text = sections[0]
     response_lines = [line for lines, _ in sections[1:] for line in lines]
     response_text = "".join(part for _, part in sections[1:])
     owner = f"{package}/{name}"
-    request, bad_request = _message_from_lines(
-        request_lines, request_text, package, name + "Request", path, subfolder="srv", owner=owner
+    out = DiagnosticSink()
+    request = _message_from_lines(
+        request_lines,
+        request_text,
+        package,
+        name + "Request",
+        path,
+        out,
+        subfolder="srv",
+        owner=owner,
     )
-    response, bad_response = _message_from_lines(
+    response = _message_from_lines(
         response_lines,
         response_text,
         package,
         name + "Response",
         path,
+        out,
         subfolder="srv",
         owner=owner,
     )
-    if bad_request or bad_response:
-        raise LocatedError(bad_request + bad_response)
+    out.raise_if_errors()
     return ServiceSpec(package, name, Dialect.ROS1, request, response, text=text, source=path)
 
 
@@ -387,7 +382,7 @@ def action_texts(name: str, goal: str, result: str, feedback: str) -> dict[str, 
 
 def parse_action(text: str, package: str, name: str, path: str = "<string>") -> ActionSpec:
     """Parse a ``.action`` text into genaction's seven messages."""
-    sections = _split_sections(text)
+    sections = _split_sections(text, path)
     if len(sections) != 3:
         last = max(1, text.count("\n") + 1)
         where = SourceLocation(path, last if len(sections) < 3 else 1, 1)
@@ -399,35 +394,32 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     texts = action_texts(name, *(section_text for _, section_text in sections))
     owner = f"{package}/{name}"
     parts: dict[str, MessageSpec] = {}
-    problems: list[Diagnostic] = []
+    out = DiagnosticSink()
     for (lines, _), part in zip(sections, ("Goal", "Result", "Feedback"), strict=True):
         # The banner genaction adds is part of the text (and the md5) but documents nothing.
-        spec, bad = _message_from_lines(
+        parts[part] = _message_from_lines(
             lines,
             texts[name + part],
             package,
             name + part,
             path,
+            out,
             subfolder="action",
             owner=owner,
         )
-        parts[part] = spec
-        problems += bad
     for wrapper in ("Action", "ActionGoal", "ActionResult", "ActionFeedback"):
         generated = texts[name + wrapper]
-        spec, bad = _message_from_lines(
-            _numbered(generated)[1:],
+        parts[wrapper] = _message_from_lines(
+            _numbered(generated, path)[1:],
             generated,
             package,
             name + wrapper,
             path,
+            out,
             subfolder="action",
             owner=owner,
         )
-        parts[wrapper] = spec
-        problems += bad
-    if problems:
-        raise LocatedError(problems)
+    out.raise_if_errors()
     derived = tuple(parts[w] for w in ("Action", "ActionGoal", "ActionResult", "ActionFeedback"))
     return ActionSpec(
         package,

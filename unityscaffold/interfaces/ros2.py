@@ -12,7 +12,7 @@ from __future__ import annotations
 import itertools
 import re
 
-from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation
+from unityscaffold.errors import DiagnosticSink, LocatedError, SourceLocation
 from unityscaffold.interfaces._comments import CommentTracker, clean_block
 from unityscaffold.interfaces.model import (
     ROS2_PRIMITIVES,
@@ -270,25 +270,27 @@ def _constant(type_text: str, rest: str, rest_col: int) -> Constant:
     return Constant(type_text, name, value, value_text)
 
 
-def _finish(item: Field | Constant, docs: list[str], where: SourceLocation) -> Field | Constant:
-    if isinstance(item, Field):
-        return Field(item.type, item.name, item.default, item.type_text, clean_block(docs), where)
+def _finish_field(item: Field, docs: list[str], where: SourceLocation) -> Field:
+    return Field(item.type, item.name, item.default, item.type_text, clean_block(docs), where)
+
+
+def _finish_constant(item: Constant, docs: list[str], where: SourceLocation) -> Constant:
     return Constant(item.type, item.name, item.value, item.text, clean_block(docs), where)
 
 
 def _duplicates(
-    items: list[tuple[Field | Constant, list[str], SourceLocation]], raw: dict[int, str]
-) -> list[Diagnostic]:
-    problems: list[Diagnostic] = []
+    items: list[tuple[Field | Constant, list[str], SourceLocation]],
+    raw: dict[int, str],
+    out: DiagnosticSink,
+) -> None:
     seen: set[tuple[type, str]] = set()
     for item, _, where in items:
         key = (type(item), item.name)
         if key in seen:
             kind = "field" if isinstance(item, Field) else "constant"
             at = SourceLocation(where.path, where.line, 1, raw.get(where.line))
-            problems.append(Diagnostic(at, f"duplicate {kind} name '{item.name}'"))
+            out.error(at, f"duplicate {kind} name '{item.name}'")
         seen.add(key)
-    return problems
 
 
 def _message(
@@ -297,11 +299,11 @@ def _message(
     package: str,
     name: str,
     path: str,
+    out: DiagnosticSink,
     *,
     subfolder: str = "msg",
     owner: str | None = None,
-) -> tuple[MessageSpec, list[Diagnostic]]:
-    problems: list[Diagnostic] = []
+) -> MessageSpec:
     docs = CommentTracker()
     items: list[tuple[Field | Constant, list[str], SourceLocation]] = []
     for number, raw in lines:
@@ -316,26 +318,25 @@ def _message(
                 item = _declaration(code.rstrip(), package)
             except _Problem as bad:
                 where = SourceLocation(path, number, bad.col, raw)
-                problems.append(Diagnostic(where, bad.message, expected=bad.expected))
+                out.error(where, bad.message, expected=bad.expected)
                 continue
             comment = line[len(code) :] if hash_sign else None
             items.append((item, docs.declaration(comment), SourceLocation(path, number, 1)))
-    problems += _duplicates(items, dict(lines))
-    fields = tuple(_finish(*entry) for entry in items if isinstance(entry[0], Field))
-    constants = tuple(_finish(*entry) for entry in items if isinstance(entry[0], Constant))
-    spec = MessageSpec(
+    _duplicates(items, dict(lines), out)
+    fields = tuple(_finish_field(f, c, w) for f, c, w in items if isinstance(f, Field))
+    constants = tuple(_finish_constant(k, c, w) for k, c, w in items if isinstance(k, Constant))
+    return MessageSpec(
         package,
         name,
         Dialect.ROS2,
         fields,
         constants,
-        text,  # type: ignore[arg-type]
+        text,
         docs.message_doc,
         path,
         subfolder,
         owner,
     )
-    return spec, problems
 
 
 def _numbered(text: str) -> list[tuple[int, str]]:
@@ -344,13 +345,15 @@ def _numbered(text: str) -> list[tuple[int, str]]:
 
 def parse_message(text: str, package: str, name: str, path: str = "<string>") -> MessageSpec:
     """Parse a ROS 2 ``.msg`` text; raises ``LocatedError`` listing every bad line."""
-    spec, problems = _message(_numbered(text), text, package, name, path)
-    if problems:
-        raise LocatedError(problems)
+    out = DiagnosticSink()
+    spec = _message(_numbered(text), text, package, name, path, out)
+    out.raise_if_errors()
     return spec
 
 
-def _sections(text: str, count: int, path: str, what: str, expected: str):
+def _sections(
+    text: str, count: int, path: str, what: str, expected: str
+) -> list[list[tuple[int, str]]]:
     lines = _numbered(text)
     cuts = [i for i, (_, line) in enumerate(lines) if line == "---"]
     if len(cuts) != count - 1:
@@ -420,33 +423,43 @@ def parse_service(text: str, package: str, name: str, path: str = "<string>") ->
     """Parse a ROS 2 ``.srv`` text into ``<Name>_Request``, ``_Response`` and ``_Event``."""
     request_lines, response_lines = _sections(text, 2, path, "a service", "REQUEST\n---\nRESPONSE")
     owner = f"{package}/srv/{name}"
-    halves, problems = [], []
-    for lines, suffix in ((request_lines, "_Request"), (response_lines, "_Response")):
-        half_text = "\n".join(line for _, line in lines)
-        spec, bad = _message(
-            lines, half_text, package, name + suffix, path, subfolder="srv", owner=owner
+    out = DiagnosticSink()
+    request, response = (
+        _message(
+            lines,
+            "\n".join(line for _, line in lines),
+            package,
+            name + suffix,
+            path,
+            out,
+            subfolder="srv",
+            owner=owner,
         )
-        halves.append(spec)
-        problems += bad
-    if problems:
-        raise LocatedError(problems)
-    return _with_event(ServiceSpec(package, name, Dialect.ROS2, halves[0], halves[1], text, path))
+        for lines, suffix in ((request_lines, "_Request"), (response_lines, "_Response"))
+    )
+    out.raise_if_errors()
+    return _with_event(ServiceSpec(package, name, Dialect.ROS2, request, response, text, path))
 
 
 def parse_action(text: str, package: str, name: str, path: str = "<string>") -> ActionSpec:
     """Parse a ROS 2 ``.action`` text and derive rosidl's messages and services."""
     sections = _sections(text, 3, path, "an action", "GOAL\n---\nRESULT\n---\nFEEDBACK")
     owner = f"{package}/action/{name}"
-    parts, problems = [], []
-    for lines, suffix in zip(sections, ("_Goal", "_Result", "_Feedback"), strict=True):
-        part_text = "\n".join(line for _, line in lines)
-        spec, bad = _message(
-            lines, part_text, package, name + suffix, path, subfolder="action", owner=owner
+    out = DiagnosticSink()
+    goal, result, feedback = (
+        _message(
+            lines,
+            "\n".join(line for _, line in lines),
+            package,
+            name + suffix,
+            path,
+            out,
+            subfolder="action",
+            owner=owner,
         )
-        parts.append(spec)
-        problems += bad
-    if problems:
-        raise LocatedError(problems)
+        for lines, suffix in zip(sections, ("_Goal", "_Result", "_Feedback"), strict=True)
+    )
+    out.raise_if_errors()
     prefix = f"{package}/action/{name}"
     goal_id = Field(TypeRef("unique_identifier_msgs/msg/UUID"), "goal_id")
     send_goal = _derived_service(
@@ -476,7 +489,9 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
         package,
         name,
         Dialect.ROS2,
-        *parts,
+        goal,
+        result,
+        feedback,
         text=text,
         source=path,
         derived=(feedback_message,),
