@@ -81,10 +81,6 @@ def _describe(name: str, fields: tuple[Field, ...]) -> _Description:
     }
 
 
-def _nested(name: str) -> Field:
-    return Field(TypeRef(name), "")
-
-
 class Ros2Identity:
     """RIHS01 hashes over one registry."""
 
@@ -103,7 +99,7 @@ class Ros2Identity:
                 ("event_message", interface.event),
             )
             return tuple(Field(TypeRef(p.full_name), n) for n, p in parts)
-        parts = (
+        action_parts: tuple[tuple[str, MessageSpec | ServiceSpec], ...] = (
             ("goal", interface.goal),
             ("result", interface.result),
             ("feedback", interface.feedback),
@@ -111,7 +107,7 @@ class Ros2Identity:
             ("get_result_service", interface.services[1]),
             ("feedback_message", interface.derived[0]),
         )
-        return tuple(Field(TypeRef(p.full_name), n) for n, p in parts)
+        return tuple(Field(TypeRef(p.full_name), n) for n, p in action_parts)
 
     def _local_types(self, interface: Interface) -> dict[str, Interface]:
         """Types defined inside ``interface`` that the registry cannot look up by name."""

@@ -10,7 +10,7 @@ from __future__ import annotations
 import enum
 import re
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 from unityscaffold.errors import UserError
@@ -103,9 +103,6 @@ class Discovery:
     def __post_init__(self) -> None:
         object.__setattr__(self, "topics", tuple(sorted(self.topics, key=lambda t: t.name)))
         object.__setattr__(self, "services", tuple(sorted(self.services, key=lambda s: s.name)))
-
-    def with_warnings(self, *warnings: str) -> Discovery:
-        return replace(self, warnings=(*self.warnings, *warnings))
 
     def to_json(self) -> dict[str, Any]:
         return {
