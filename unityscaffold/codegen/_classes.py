@@ -27,6 +27,7 @@ from unityscaffold.interfaces.model import (
     ServiceSpec,
 )
 from unityscaffold.interfaces.registry import Registry
+from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
 
 __all__ = ["ClassEntry", "ClassSet", "collect_classes", "source_name", "unit_key"]
 
@@ -129,29 +130,12 @@ def unit_key(interface: Interface) -> str:
     return f"{interface.package}/{interface.kind.value}/{interface.name}"
 
 
-_ROS1_SUFFIXES = (
-    ("srv", "Request"),
-    ("srv", "Response"),
-    *(
-        ("action", s)
-        for s in (
-            "ActionGoal",
-            "ActionResult",
-            "ActionFeedback",
-            "Action",
-            "Goal",
-            "Result",
-            "Feedback",
-        )
-    ),
-)
-
-
 def _ros1_generated_owner(registry: Registry, message: MessageSpec) -> Interface | None:
     """The .srv/.action whose generated .msg copy ``message`` is (Debian installs those)."""
-    for kind, suffix in _ROS1_SUFFIXES:
+    for kind, suffix in ROS1_PART_SUFFIXES:
         if message.name.endswith(suffix) and len(message.name) > len(suffix):
-            owner = registry.find(f"{message.package}/{kind}/{message.name[: -len(suffix)]}")
+            base = message.name[: -len(suffix)]
+            owner = registry.find(f"{message.package}/{kind.value}/{base}")
             if owner is not None and not isinstance(owner, MessageSpec):
                 return owner
     return None

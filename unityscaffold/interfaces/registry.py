@@ -23,6 +23,7 @@ from unityscaffold.interfaces.model import (
     ServiceSpec,
 )
 from unityscaffold.interfaces.sources import InterfaceFile, SearchRoot, find_packages, search_roots
+from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
 
 __all__ = ["Registry", "TypeNotFound"]
 
@@ -40,18 +41,6 @@ _PARSERS: dict[Dialect, dict[InterfaceKind, _Parser]] = {
         InterfaceKind.ACTION: ros2.parse_action,
     },
 }
-# Names of the messages a ROS 1 service or action defines, longest suffix first.
-_ROS1_PART_SUFFIXES = (
-    (InterfaceKind.ACTION, "ActionFeedback"),
-    (InterfaceKind.ACTION, "ActionResult"),
-    (InterfaceKind.ACTION, "ActionGoal"),
-    (InterfaceKind.SRV, "Response"),
-    (InterfaceKind.SRV, "Request"),
-    (InterfaceKind.ACTION, "Feedback"),
-    (InterfaceKind.ACTION, "Result"),
-    (InterfaceKind.ACTION, "Action"),
-    (InterfaceKind.ACTION, "Goal"),
-)
 
 
 class TypeNotFound(UserError):
@@ -215,7 +204,7 @@ class Registry:
         """A ROS 1 service half or action message, such as ``AddTwoIntsRequest``."""
         if self.dialect is not Dialect.ROS1:
             return None
-        for kind, suffix in _ROS1_PART_SUFFIXES:
+        for kind, suffix in ROS1_PART_SUFFIXES:
             if short.endswith(suffix) and len(short) > len(suffix):
                 file = self._file(kind, package, short[: -len(suffix)])
                 if file is not None:

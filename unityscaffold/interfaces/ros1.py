@@ -32,6 +32,19 @@ from unityscaffold.interfaces.model import (
     ServiceSpec,
     TypeRef,
 )
+from unityscaffold.interfaces.suffixes import (
+    ROS1_ACTION,
+    ROS1_ACTION_FEEDBACK,
+    ROS1_ACTION_GOAL,
+    ROS1_ACTION_PARTS,
+    ROS1_ACTION_RESULT,
+    ROS1_ACTION_WRAPPERS,
+    ROS1_FEEDBACK,
+    ROS1_GOAL,
+    ROS1_REQUEST,
+    ROS1_RESPONSE,
+    ROS1_RESULT,
+)
 
 __all__ = ["ACTION_BANNER", "parse_action", "parse_message", "parse_service"]
 
@@ -338,7 +351,7 @@ def parse_service(text: str, package: str, name: str, path: str = "<string>") ->
         request_lines,
         request_text,
         package,
-        name + "Request",
+        name + ROS1_REQUEST,
         path,
         out,
         subfolder="srv",
@@ -348,7 +361,7 @@ def parse_service(text: str, package: str, name: str, path: str = "<string>") ->
         response_lines,
         response_text,
         package,
-        name + "Response",
+        name + ROS1_RESPONSE,
         path,
         out,
         subfolder="srv",
@@ -361,22 +374,25 @@ def parse_service(text: str, package: str, name: str, path: str = "<string>") ->
 def action_texts(name: str, goal: str, result: str, feedback: str) -> dict[str, str]:
     """The seven message texts genaction writes for action ``name``, by message name."""
     wrapper = "\nHeader header\nactionlib_msgs/{status} {field}\n{name}{part} {lower}\n"
+    goal_wrapper, result_wrapper, feedback_wrapper = (
+        name + suffix for suffix in (ROS1_ACTION_GOAL, ROS1_ACTION_RESULT, ROS1_ACTION_FEEDBACK)
+    )
     return {
-        f"{name}Action": ACTION_BANNER + f"\n{name}ActionGoal action_goal\n"
-        f"{name}ActionResult action_result\n{name}ActionFeedback action_feedback\n",
-        f"{name}ActionGoal": ACTION_BANNER
-        + wrapper.format(status="GoalID", field="goal_id", name=name, part="Goal", lower="goal"),
-        f"{name}ActionResult": ACTION_BANNER
+        name + ROS1_ACTION: ACTION_BANNER + f"\n{goal_wrapper} action_goal\n"
+        f"{result_wrapper} action_result\n{feedback_wrapper} action_feedback\n",
+        goal_wrapper: ACTION_BANNER
+        + wrapper.format(status="GoalID", field="goal_id", name=name, part=ROS1_GOAL, lower="goal"),
+        result_wrapper: ACTION_BANNER
         + wrapper.format(
-            status="GoalStatus", field="status", name=name, part="Result", lower="result"
+            status="GoalStatus", field="status", name=name, part=ROS1_RESULT, lower="result"
         ),
-        f"{name}ActionFeedback": ACTION_BANNER
+        feedback_wrapper: ACTION_BANNER
         + wrapper.format(
-            status="GoalStatus", field="status", name=name, part="Feedback", lower="feedback"
+            status="GoalStatus", field="status", name=name, part=ROS1_FEEDBACK, lower="feedback"
         ),
-        f"{name}Goal": ACTION_BANNER + goal,
-        f"{name}Result": ACTION_BANNER + result,
-        f"{name}Feedback": ACTION_BANNER + feedback,
+        name + ROS1_GOAL: ACTION_BANNER + goal,
+        name + ROS1_RESULT: ACTION_BANNER + result,
+        name + ROS1_FEEDBACK: ACTION_BANNER + feedback,
     }
 
 
@@ -395,7 +411,7 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     owner = f"{package}/{name}"
     parts: dict[str, MessageSpec] = {}
     out = DiagnosticSink()
-    for (lines, _), part in zip(sections, ("Goal", "Result", "Feedback"), strict=True):
+    for (lines, _), part in zip(sections, ROS1_ACTION_PARTS, strict=True):
         # The banner genaction adds is part of the text (and the md5) but documents nothing.
         parts[part] = _message_from_lines(
             lines,
@@ -407,7 +423,7 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
             subfolder="action",
             owner=owner,
         )
-    for wrapper in ("Action", "ActionGoal", "ActionResult", "ActionFeedback"):
+    for wrapper in ROS1_ACTION_WRAPPERS:
         generated = texts[name + wrapper]
         parts[wrapper] = _message_from_lines(
             _numbered(generated, path)[1:],
@@ -420,14 +436,14 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
             owner=owner,
         )
     out.raise_if_errors()
-    derived = tuple(parts[w] for w in ("Action", "ActionGoal", "ActionResult", "ActionFeedback"))
+    derived = tuple(parts[w] for w in ROS1_ACTION_WRAPPERS)
     return ActionSpec(
         package,
         name,
         Dialect.ROS1,
-        parts["Goal"],
-        parts["Result"],
-        parts["Feedback"],
+        parts[ROS1_GOAL],
+        parts[ROS1_RESULT],
+        parts[ROS1_FEEDBACK],
         text=text,
         source=path,
         derived=derived,

@@ -27,6 +27,18 @@ from unityscaffold.interfaces.model import (
     TypeRef,
     Value,
 )
+from unityscaffold.interfaces.suffixes import (
+    ROS2_ACTION_PARTS,
+    ROS2_EVENT,
+    ROS2_FEEDBACK,
+    ROS2_FEEDBACK_MESSAGE,
+    ROS2_GET_RESULT,
+    ROS2_GOAL,
+    ROS2_REQUEST,
+    ROS2_RESPONSE,
+    ROS2_RESULT,
+    ROS2_SEND_GOAL,
+)
 
 __all__ = ["parse_action", "parse_message", "parse_service"]
 
@@ -381,8 +393,8 @@ def _derived_service(
             package,
             name,
             Dialect.ROS2,
-            _derived(package, name + "_Request", request, owner),
-            _derived(package, name + "_Response", response, owner),
+            _derived(package, name + ROS2_REQUEST, request, owner),
+            _derived(package, name + ROS2_RESPONSE, response, owner),
             subfolder="action",
             owner=owner,
         )
@@ -394,12 +406,12 @@ def _with_event(service: ServiceSpec) -> ServiceSpec:
     prefix = f"{service.package}/{service.subfolder}/{service.name}"
     event = MessageSpec(
         service.package,
-        service.name + "_Event",
+        service.name + ROS2_EVENT,
         Dialect.ROS2,
         fields=(
             Field(TypeRef("service_msgs/msg/ServiceEventInfo"), "info"),
-            Field(TypeRef(prefix + "_Request", ArrayKind.BOUNDED, 1), "request"),
-            Field(TypeRef(prefix + "_Response", ArrayKind.BOUNDED, 1), "response"),
+            Field(TypeRef(prefix + ROS2_REQUEST, ArrayKind.BOUNDED, 1), "request"),
+            Field(TypeRef(prefix + ROS2_RESPONSE, ArrayKind.BOUNDED, 1), "response"),
         ),
         source=service.source,
         subfolder=service.subfolder,
@@ -435,7 +447,7 @@ def parse_service(text: str, package: str, name: str, path: str = "<string>") ->
             subfolder="srv",
             owner=owner,
         )
-        for lines, suffix in ((request_lines, "_Request"), (response_lines, "_Response"))
+        for lines, suffix in ((request_lines, ROS2_REQUEST), (response_lines, ROS2_RESPONSE))
     )
     out.raise_if_errors()
     return _with_event(ServiceSpec(package, name, Dialect.ROS2, request, response, text, path))
@@ -457,15 +469,15 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
             subfolder="action",
             owner=owner,
         )
-        for lines, suffix in zip(sections, ("_Goal", "_Result", "_Feedback"), strict=True)
+        for lines, suffix in zip(sections, ROS2_ACTION_PARTS, strict=True)
     )
     out.raise_if_errors()
     prefix = f"{package}/action/{name}"
     goal_id = Field(TypeRef("unique_identifier_msgs/msg/UUID"), "goal_id")
     send_goal = _derived_service(
         package,
-        name + "_SendGoal",
-        (goal_id, Field(TypeRef(prefix + "_Goal"), "goal")),
+        name + ROS2_SEND_GOAL,
+        (goal_id, Field(TypeRef(prefix + ROS2_GOAL), "goal")),
         (
             Field(TypeRef("bool"), "accepted"),
             Field(TypeRef("builtin_interfaces/msg/Time"), "stamp"),
@@ -474,15 +486,15 @@ def parse_action(text: str, package: str, name: str, path: str = "<string>") -> 
     )
     get_result = _derived_service(
         package,
-        name + "_GetResult",
+        name + ROS2_GET_RESULT,
         (goal_id,),
-        (Field(TypeRef("int8"), "status"), Field(TypeRef(prefix + "_Result"), "result")),
+        (Field(TypeRef("int8"), "status"), Field(TypeRef(prefix + ROS2_RESULT), "result")),
         owner,
     )
     feedback_message = _derived(
         package,
-        name + "_FeedbackMessage",
-        (goal_id, Field(TypeRef(prefix + "_Feedback"), "feedback")),
+        name + ROS2_FEEDBACK_MESSAGE,
+        (goal_id, Field(TypeRef(prefix + ROS2_FEEDBACK), "feedback")),
         owner,
     )
     return ActionSpec(
