@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.apply.rossharp import RESERVED_NAMES
-from unityscaffold.codegen import Generation, Options, generate
+from unityscaffold.codegen import ClassRole, Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.scripts import (
     PublisherScript,
@@ -80,7 +80,7 @@ def _view(
         "manifest": manifest.path.name,
     }
     if isinstance(item, Topic):
-        message = generation.classes[spec.full_name]["message"].qualified
+        message = generation.message_class(spec.full_name).qualified
         if item.direction is Direction.PUBLISH:
             return PublisherScript(
                 **common, topic=item.name, message_type=message, rate=item.rate or 0.0
@@ -97,8 +97,8 @@ def _view(
     return kind(
         **common,
         service=item.name,
-        request_type=classes["request"].qualified,
-        response_type=classes["response"].qualified,
+        request_type=classes[ClassRole.REQUEST].qualified,
+        response_type=classes[ClassRole.RESPONSE].qualified,
     )
 
 

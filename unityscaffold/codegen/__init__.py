@@ -11,5 +11,6 @@ from unityscaffold.codegen.generate import (
     SkippedClass,
     generate,
 )
+from unityscaffold.codegen.roles import ClassRole
 
-__all__ = ["GeneratedFile", "Generation", "Options", "SkippedClass", "generate"]
+__all__ = ["ClassRole", "GeneratedFile", "Generation", "Options", "SkippedClass", "generate"]

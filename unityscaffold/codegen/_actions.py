@@ -16,6 +16,7 @@ from unityscaffold.codegen import literals
 from unityscaffold.codegen._build import FileContext
 from unityscaffold.codegen._references import References
 from unityscaffold.codegen.naming import CsClass
+from unityscaffold.codegen.roles import WRAPPER_PAYLOAD, ClassRole
 from unityscaffold.codegen.views import ActionView, ActionWrapperView, FileHeader
 from unityscaffold.interfaces.model import Dialect
 
@@ -45,25 +46,33 @@ class ActionClasses:
     action: CsClass
 
 
-# role -> (base, payload member, runtime parameters (type key or C# type, name)) per dialect
+# role -> (ROS#'s base class, payload member, runtime parameters (type key or C# type, name))
 _Wrapper = tuple[str, str, tuple[tuple[str, str], ...]]
-_WRAPPERS: dict[Dialect, dict[str, _Wrapper]] = {
+_WRAPPERS: dict[Dialect, dict[ClassRole, _Wrapper]] = {
     Dialect.ROS1: {
-        "action_goal": ("ActionGoal", "goal", (("header", "header"), ("goal_id", "goal_id"))),
-        "action_result": (
+        ClassRole.ACTION_GOAL: (
+            "ActionGoal",
+            "goal",
+            (("header", "header"), ("goal_id", "goal_id")),
+        ),
+        ClassRole.ACTION_RESULT: (
             "ActionResult",
             "result",
             (("header", "header"), ("goal_status", "status")),
         ),
-        "action_feedback": (
+        ClassRole.ACTION_FEEDBACK: (
             "ActionFeedback",
             "feedback",
             (("header", "header"), ("goal_status", "status")),
         ),
     },
     Dialect.ROS2: {
-        "action_goal": ("ActionGoal", "args", (("header", "header"), ("goal_info", "goalInfo"))),
-        "action_result": (
+        ClassRole.ACTION_GOAL: (
+            "ActionGoal",
+            "args",
+            (("header", "header"), ("goal_info", "goalInfo")),
+        ),
+        ClassRole.ACTION_RESULT: (
             "ActionResult",
             "values",
             (
@@ -74,14 +83,13 @@ _WRAPPERS: dict[Dialect, dict[str, _Wrapper]] = {
                 ("string", "id"),
             ),
         ),
-        "action_feedback": (
+        ClassRole.ACTION_FEEDBACK: (
             "ActionFeedback",
             "values",
             (("header", "header"), ("string", "action"), ("string", "id")),
         ),
     },
 }
-_PAYLOAD_ROLE = {"action_goal": "goal", "action_result": "result", "action_feedback": "feedback"}
 
 
 def _base(ctx: FileContext, name: str) -> str:
@@ -91,14 +99,14 @@ def _base(ctx: FileContext, name: str) -> str:
 def build_wrapper(
     ctx: FileContext,
     classes: ActionClasses,
-    role: str,
+    role: ClassRole,
     runtime: RuntimeTypes,
     ros_name: str,
     source: str,
     identity: str,
 ) -> ActionWrapperView:
-    cls: CsClass = getattr(classes, role)
-    payload_cls: CsClass = getattr(classes, _PAYLOAD_ROLE[role])
+    cls: CsClass = getattr(classes, role.value)
+    payload_cls: CsClass = getattr(classes, WRAPPER_PAYLOAD[role].value)
     base, payload, params = _WRAPPERS[ctx.dialect][role]
     runtime_classes: dict[str, CsClass] = {
         key: getattr(runtime, key) for key, _ in params if hasattr(runtime, key)
@@ -144,7 +152,9 @@ def build_action(
     )
     refs = References(cls.namespace, ctx.known, [(c, False) for c in order])
     names = [refs.name(c) for c in order]
-    parts = tuple(zip(names[:3], ("action_goal", "action_result", "action_feedback"), strict=False))
+    # The constructor's parameters are named after the ROS 1 Action message's fields.
+    fields = ("action_goal", "action_result", "action_feedback")
+    parts = tuple(zip(names[:3], fields, strict=True))
     return ActionView(
         header=FileHeader(source, identity, ctx.define, cls.namespace, refs.usings),
         class_name=cls.name,

@@ -17,6 +17,7 @@ from unityscaffold.codegen.naming import (
     rossharp_class,
     validate_namespace,
 )
+from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX, ClassRole
 from unityscaffold.codegen.shipped import ROS1_HANDWRITTEN, shipped_classes
 from unityscaffold.errors import LocatedError, SourceLocation, UserError
 from unityscaffold.interfaces.model import (
@@ -31,24 +32,6 @@ from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
 
 __all__ = ["ClassEntry", "ClassSet", "collect_classes", "source_name", "unit_key"]
 
-_ACTION_ROLES = (
-    "goal",
-    "result",
-    "feedback",
-    "action_goal",
-    "action_result",
-    "action_feedback",
-    "action",
-)
-_ROLE_SUFFIX = {
-    "goal": "Goal",
-    "result": "Result",
-    "feedback": "Feedback",
-    "action_goal": "ActionGoal",
-    "action_result": "ActionResult",
-    "action_feedback": "ActionFeedback",
-    "action": "Action",
-}
 _WRAPPER_DEPENDENCIES = {
     Dialect.ROS1: ("std_msgs/Header", "actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"),
     Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus"),
@@ -60,7 +43,7 @@ class ClassEntry:
     """One C# class: the unit (message, service or action) it belongs to and its role there."""
 
     interface: Interface
-    role: str
+    role: ClassRole
     spec: MessageSpec | None
     cs_class: CsClass
     ros_message_name: str
@@ -170,7 +153,7 @@ class ClassSet:
         if dialect is Dialect.ROS1:
             self.known.add(rossharp_class(ns, cls) for ns, cls in ROS1_HANDWRITTEN)
         self.by_ros: dict[str, CsClass] = {}
-        self._roles: dict[str, dict[str, CsClass]] = {}
+        self._roles: dict[str, dict[ClassRole, CsClass]] = {}
         for item in items:
             self._roles.setdefault(unit_key(item.interface), {})[item.role] = item.cs_class
             if item.spec is not None:
@@ -209,12 +192,12 @@ class ClassSet:
 
     def action_classes(self, interface: Interface) -> ActionClasses:
         roles = self._roles[unit_key(interface)]
-        return ActionClasses(**{role: roles[role] for role in _ACTION_ROLES})
+        return ActionClasses(**{role.value: roles[role] for role in ACTION_ROLES})
 
-    def class_map(self) -> dict[str, dict[str, CsClass]]:
+    def class_map(self) -> dict[str, dict[ClassRole, CsClass]]:
         result = {name: dict(roles) for name, roles in sorted(self._roles.items())}
         for name, cls in sorted(self.by_ros.items()):
-            result.setdefault(name, {"message": cls})
+            result.setdefault(name, {ClassRole.MESSAGE: cls})
         return result
 
     def file_context(self) -> FileContext:
@@ -228,21 +211,21 @@ class ClassSet:
         )
 
 
-def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> str:
+def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> ClassRole:
     suffix = derived.name[len(action.name) :]
-    return {v: k for k, v in _ROLE_SUFFIX.items()}[suffix]
+    return next(role for role in ACTION_ROLES if CLASS_SUFFIX[role] == suffix)
 
 
 def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
     segment = namespace_segment(unit.package)
     namespace = f"{root}.{segment}"
+    folder = unit.kind.value
 
     def entry(
-        role: str,
+        role: ClassRole,
         spec: MessageSpec | None,
         name: str,
         ros_name: str,
-        folder: str,
         identity: Interface,
     ) -> ClassEntry:
         return ClassEntry(
@@ -256,33 +239,31 @@ def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
         )
 
     if isinstance(unit, MessageSpec):
-        return [entry("message", unit, class_name(unit.name), unit.full_name, "msg", unit)]
+        return [entry(ClassRole.MESSAGE, unit, class_name(unit.name), unit.full_name, unit)]
     base = class_name(unit.name)
     if isinstance(unit, ServiceSpec):
         return [
-            entry("request", unit.request, base + "Request", unit.full_name, "srv", unit.request),
-            entry(
-                "response", unit.response, base + "Response", unit.full_name, "srv", unit.response
-            ),
+            entry(role, half, base + CLASS_SUFFIX[role], unit.full_name, half)
+            for role, half in (
+                (ClassRole.REQUEST, unit.request),
+                (ClassRole.RESPONSE, unit.response),
+            )
         ]
     prefix = f"{unit.package}/" if unit.dialect is Dialect.ROS1 else f"{unit.package}/action/"
-    parts = {"goal": unit.goal, "result": unit.result, "feedback": unit.feedback}
+    parts = {
+        ClassRole.GOAL: unit.goal,
+        ClassRole.RESULT: unit.result,
+        ClassRole.FEEDBACK: unit.feedback,
+    }
     derived = {d.name[len(unit.name) :]: d for d in unit.derived}
     items = []
-    for role in _ACTION_ROLES:
-        suffix = _ROLE_SUFFIX[role]
+    for role in ACTION_ROLES:
+        suffix = CLASS_SUFFIX[role]
         identity: Interface = parts.get(role) or (
             derived.get(suffix) or unit if unit.dialect is Dialect.ROS1 else unit
         )
         items.append(
-            entry(
-                role,
-                parts.get(role),
-                base + suffix,
-                f"{prefix}{unit.name}{suffix}",
-                "action",
-                identity,
-            )
+            entry(role, parts.get(role), base + suffix, f"{prefix}{unit.name}{suffix}", identity)
         )
     return items
 

@@ -14,6 +14,7 @@ from unityscaffold.codegen._build import FileContext, build_message
 from unityscaffold.codegen._classes import ClassEntry, ClassSet, collect_classes, source_name
 from unityscaffold.codegen._identity import Identities
 from unityscaffold.codegen.naming import CsClass
+from unityscaffold.codegen.roles import MESSAGE_ROLES, ClassRole
 from unityscaffold.codegen.views import View
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
@@ -42,7 +43,7 @@ class GeneratedFile:
     path: str
     text: str
     ros_type: str
-    role: str
+    role: ClassRole
     cs_class: CsClass
 
 
@@ -52,7 +53,7 @@ class SkippedClass:
 
     path: str
     ros_type: str
-    role: str
+    role: ClassRole
     cs_class: CsClass
     reason: str
 
@@ -62,20 +63,18 @@ class Generation:
     """What one run produces, and which C# class each ROS type maps to.
 
     ``classes`` maps ``pkg/msg/Name``, ``pkg/srv/Name`` and ``pkg/action/Name`` (both ROS
-    versions) to the classes by role: ``message``; ``request``/``response``; ``goal``,
-    ``result``, ``feedback``, ``action_goal``, ``action_result``, ``action_feedback``,
-    ``action``. Every message full name as field types spell it (ROS 1 ``pkg/Name``,
-    ``pkg/NameRequest``; ROS 2 ``pkg/srv/Name_Request``…) maps to ``{"message": class}`` too,
-    shipped and skipped types included.
+    versions) to their classes by ``ClassRole``. Every message full name as field types spell
+    it (ROS 1 ``pkg/Name``, ``pkg/NameRequest``; ROS 2 ``pkg/srv/Name_Request``…) maps to
+    ``{ClassRole.MESSAGE: class}`` too, shipped and skipped types included.
     """
 
     files: tuple[GeneratedFile, ...]
     skipped: tuple[SkippedClass, ...]
-    classes: dict[str, dict[str, CsClass]] = field(default_factory=dict)
+    classes: dict[str, dict[ClassRole, CsClass]] = field(default_factory=dict)
 
     def message_class(self, name: str) -> CsClass:
         """The class of a message type (as users or field types name it)."""
-        return self.classes[name]["message"]
+        return self.classes[name][ClassRole.MESSAGE]
 
 
 def _render(view: View) -> str:
@@ -84,7 +83,7 @@ def _render(view: View) -> str:
 
 def _view(class_set: ClassSet, ctx: FileContext, ids: Identities, item: ClassEntry) -> View:
     source = source_name(item.interface)
-    if item.role in ("message", "request", "response", "goal", "result", "feedback"):
+    if item.role in MESSAGE_ROLES:
         assert item.spec is not None
         return build_message(
             ctx,
@@ -95,7 +94,7 @@ def _view(class_set: ClassSet, ctx: FileContext, ids: Identities, item: ClassEnt
             ids.label(item.identity_of),
         )
     classes = class_set.action_classes(item.interface)
-    if item.role == "action":
+    if item.role is ClassRole.ACTION:
         identity = ids.label(item.identity_of)
         return build_action(ctx, classes, item.ros_message_name, source, identity)
     return build_wrapper(
