@@ -134,7 +134,6 @@ def build_wrapper(
         payload_type=payload_type,
         parameters=", ".join(parameters),
         base_arguments=", ".join(n for _, n in typed),
-        payload_parameter=payload,
     )
 
 

@@ -95,7 +95,11 @@ class MessageView:
 
 @dataclass(frozen=True, slots=True)
 class ActionWrapperView:
-    """``<A>ActionGoal``/``ActionResult``/``ActionFeedback`` on ROS#'s generic bases."""
+    """``<A>ActionGoal``/``ActionResult``/``ActionFeedback`` on ROS#'s generic bases.
+
+    ``payload`` names both the member that holds the part and the constructor parameter that
+    sets it.
+    """
 
     template: ClassVar[str] = "rossharp/ActionWrapper.cs.jinja"
     header: FileHeader
@@ -107,7 +111,6 @@ class ActionWrapperView:
     payload_type: str
     parameters: str
     base_arguments: str
-    payload_parameter: str
 
 
 @dataclass(frozen=True, slots=True)
