@@ -1,4 +1,4 @@
-"""Scenes the tool builds itself, from empty files of each generation (built-in templates)."""
+"""Scenes the tool builds itself, from empty files of each serialization era (built-in layouts)."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ Check = Callable[[SceneDocument], None]
 SCRIPT = ScriptRef("ff98778ae051cfd40a6e4effdf851ebd")
 
 # Written by hand after docs/unity-yaml.md#eras (5.5-2018.2 layout): no real file of
-# that generation is in the corpus, so this pins the legacy templates.
+# that era is in the corpus, so this pins the legacy layouts.
 LEGACY = """%YAML 1.1
 %TAG !u! tag:unity3d.com,2011:
 --- !u!29 &1
@@ -109,7 +109,7 @@ def test_a_scene_built_from_scratch_is_sound_and_stable(
     ]
 
 
-def test_built_objects_use_the_files_generation() -> None:
+def test_built_objects_use_the_files_era() -> None:
     legacy = SceneDocument.parse(LEGACY, "legacy.unity")
     _build(legacy)
     new_docs = [d for d in legacy.documents() if d.file_id > 101]

@@ -18,7 +18,7 @@ Check = Callable[[SceneDocument], None]
 
 
 def _target(scene: SceneDocument) -> str:
-    return "RosConnector" if scene.generation.is_scene else f"{scene.roots()[0].path}/RosConnector"
+    return "RosConnector" if scene.is_scene else f"{scene.roots()[0].path}/RosConnector"
 
 
 def _attach_all_kinds(scene: SceneDocument) -> None:

@@ -1,4 +1,4 @@
-"""Indexing: hierarchy paths, components and scripts, prefab instances, generation markers."""
+"""Indexing: hierarchy paths, components and scripts, prefab instances, serialization eras."""
 
 from __future__ import annotations
 
@@ -116,12 +116,13 @@ def test_an_empty_path_segment_is_refused(path: str) -> None:
         ("Target.prefab", True, False, False),
     ],
 )
-def test_the_generation_is_detected_per_file(
+def test_the_serialization_era_is_detected_per_file(
     name: str, root_order: bool, scene_roots: bool, is_scene: bool
 ) -> None:
-    gen = _load(name).generation
-    assert (gen.root_order, gen.scene_roots, gen.is_scene) == (root_order, scene_roots, is_scene)
-    assert gen.modern_prefab_fields and not gen.classid_component_items
+    doc = _load(name)
+    era = doc.era
+    assert (era.root_order, era.scene_roots, doc.is_scene) == (root_order, scene_roots, is_scene)
+    assert era.modern_prefab_fields and not era.classid_component_items
 
 
 def test_names_in_double_quotes_are_decoded(tmp_path: Path) -> None:

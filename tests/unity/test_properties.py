@@ -50,7 +50,7 @@ edits = st.lists(
 
 def _root(scene: SceneDocument, path: str) -> str:
     # a prefab has one root: keep every generated path under it
-    return path if scene.generation.is_scene else f"{scene.roots()[0].name}/{path}"
+    return path if scene.is_scene else f"{scene.roots()[0].name}/{path}"
 
 
 def _value(scene: SceneDocument, value: object) -> object:

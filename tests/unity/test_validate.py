@@ -8,8 +8,11 @@ import pytest
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity import _textops
+from unityscaffold.unity._documents import Documents
+from unityscaffold.unity._split import split_text
 from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.textdiff import diff
+from unityscaffold.unity.validate import validate_docs
 from unityscaffold.unity.values import ScriptRef
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "unity"
@@ -71,12 +74,14 @@ def test_a_diagnostic_names_the_document_key_and_line(tmp_path: Path) -> None:
 
 
 def test_an_edited_document_that_is_not_yaml_is_caught() -> None:
-    scene = SceneDocument.parse(SOURCE.read_text(), "s.unity")
-    doc = scene.document(1259760941)
-    assert doc is not None
+    # No public edit writes broken YAML, so break a document the way a faulty edit would.
+    split = split_text(SOURCE.read_text(), "s.unity")
+    docs = Documents("s.unity", split.prolog, split.docs, split.crlf)
+    doc = docs.require(1259760941)
     _textops.set_text(doc, doc.text.replace("Topic: test", "Topic: [unclosed"))
-    scene._touch(doc)
-    assert any("not valid YAML" in d.message for d in scene.validate())
+    docs.touch(doc)
+    problems = validate_docs(docs.path, docs.prolog, docs.in_order, docs.changed)
+    assert any("not valid YAML" in d.message for d in problems)
 
 
 def test_write_rewrites_only_when_bytes_change(tmp_path: Path) -> None:

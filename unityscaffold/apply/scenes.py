@@ -18,7 +18,7 @@ from unityscaffold.apply.lock import LockComponent, LockFile
 from unityscaffold.apply.rossharp import STOCK_SCRIPTS, RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import Component, Manifest, ObjectPath, StructValue
-from unityscaffold.unity import Enum, ObjectRef, SceneDocument, ScriptRef
+from unityscaffold.unity import Enum, GameObjectNotFound, ObjectRef, SceneDocument, ScriptRef
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
 from unityscaffold.unity.values import FieldValue
 
@@ -43,6 +43,12 @@ class ScenePlan:
         return self.before != self.after
 
 
+_CREATE_HINT = (
+    "add it in Unity, or set `create: true` on this entry (`create_gameobjects: true` for "
+    "every entry) and apply creates it"
+)
+
+
 class _SceneEditor:
     """Applies the desired components to one loaded scene, recording what it did."""
 
@@ -54,7 +60,10 @@ class _SceneEditor:
 
     def gameobject(self, path: str, create: bool, where: SourceLocation):
         with located_at(where):
-            return self.doc.ensure_gameobject(path, create=create)
+            try:
+                return self.doc.ensure_gameobject(path, create=create)
+            except GameObjectNotFound as error:
+                raise UserError(error.message, hint=_CREATE_HINT) from None
 
     def attach(
         self,

@@ -11,7 +11,7 @@ import typer
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.unity.index import GameObject
 from unityscaffold.unity.project import find_project_root, script_index, script_ref_for_file
-from unityscaffold.unity.scene import SceneDocument
+from unityscaffold.unity.scene import GameObjectNotFound, SceneDocument
 from unityscaffold.unity.setvalue import component_label, parse_assignment, parse_value
 from unityscaffold.unity.values import ScriptRef
 
@@ -76,7 +76,8 @@ def ls(
     names = _script_names(scene)
     if as_json:
         nodes = [_node_json(doc, go, names) for go in doc.gameobjects()]
-        payload = {"path": str(scene), "generation": doc.generation.label, "gameobjects": nodes}
+        # "generation" is the era's key since the first release; scripts may read it.
+        payload = {"path": str(scene), "generation": doc.era.label, "gameobjects": nodes}
         typer.echo(json.dumps(payload, indent=2))
         return
     for depth, go in doc.tree():
@@ -137,7 +138,11 @@ def attach(
     pairs = [parse_assignment(a) for a in assignments or []]
     doc = _load_checked(scene)
     names = _script_names(scene)
-    go = doc.ensure_gameobject(gameobject, create=create)
+    try:
+        go = doc.ensure_gameobject(gameobject, create=create)
+    except GameObjectNotFound as error:
+        hint = "add it in Unity, or pass --create to create it (and any missing parents)"
+        raise UserError(error.message, hint=hint) from None
     fields = [(name, parse_value(value, doc, names)) for name, value in pairs]
     comp = doc.ensure_component(go, ref, fields)
     label = ref.class_name or names.get(ref.guid) or ref.guid

@@ -6,8 +6,9 @@ reads ``.meta`` files, and ``project`` finds a project's root, salt and script G
 here writes a file itself: ``SceneDocument.write`` goes through ``unityscaffold.fileout``.
 """
 
-from unityscaffold.unity.index import Component, GameObject
-from unityscaffold.unity.scene import SceneDocument
+from unityscaffold.unity._eras import SerializationEra
+from unityscaffold.unity.index import GameObject, SceneComponent
+from unityscaffold.unity.scene import GameObjectNotFound, SceneDocument
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.values import (
     AssetRef,
@@ -21,14 +22,16 @@ from unityscaffold.unity.values import (
 
 __all__ = [
     "AssetRef",
-    "Component",
     "Enum",
     "FieldValue",
     "GameObject",
+    "GameObjectNotFound",
     "InlineMap",
     "ObjectRef",
+    "SceneComponent",
     "SceneDocument",
     "ScriptRef",
+    "SerializationEra",
     "diff",
     "script_file_id_for_dll_class",
 ]

@@ -14,11 +14,11 @@ from dataclasses import dataclass, field
 import yaml
 
 from unityscaffold.unity import _fields as F
+from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity._split import Doc
-from unityscaffold.unity.generation import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity.values import ScriptRef
 
-__all__ = ["Component", "GameObject", "Hierarchy", "Node", "build_hierarchy"]
+__all__ = ["GameObject", "Hierarchy", "Node", "SceneComponent", "build_hierarchy"]
 
 _PI_NAME_RE = re.compile(r"propertyPath: m_Name\n\s+value: (.*)")
 _PI_ROOT_ORDER_RE = re.compile(r"propertyPath: m_RootOrder\n\s+value: (-?\d+)")
@@ -50,8 +50,8 @@ class GameObject:
 
 
 @dataclass(frozen=True, slots=True)
-class Component:
-    """A snapshot of one component document."""
+class SceneComponent:
+    """A snapshot of one component document (a Transform, a script, any class on a GameObject)."""
 
     file_id: int
     class_id: int

@@ -8,22 +8,22 @@ GameObject + script, and fileIDs of new objects derive from stable names.
 
 from __future__ import annotations
 
-import bisect
-import itertools
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 
-from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
+from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import write_if_changed
+from unityscaffold.unity import _edits
 from unityscaffold.unity import _fields as F
+from unityscaffold.unity._documents import Documents
+from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._split import Doc, split_text
-from unityscaffold.unity.generation import Generation, detect
-from unityscaffold.unity.index import Component, GameObject, Hierarchy, build_hierarchy
+from unityscaffold.unity.index import GameObject, Hierarchy, SceneComponent
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.validate import validate_docs
 from unityscaffold.unity.values import MONOSCRIPT_FILE_ID, FieldValue, ScriptRef
 
-__all__ = ["Fields", "SceneDocument"]
+__all__ = ["Fields", "GameObjectNotFound", "SceneDocument"]
 
 Fields = Mapping[str, FieldValue] | Sequence[tuple[str, FieldValue]]
 
@@ -31,6 +31,14 @@ _BINARY_HINT = (
     "set Edit > Project Settings > Editor > Asset Serialization Mode to 'Force Text' "
     "so Unity writes scenes as YAML text"
 )
+
+
+class GameObjectNotFound(UserError):
+    """No GameObject at a path; the message lists the names that do exist where it stopped.
+
+    It carries no hint: how to get the object created depends on the command (a flag, a
+    manifest key), so the caller that knows adds it.
+    """
 
 
 class SceneDocument:
@@ -41,18 +49,22 @@ class SceneDocument:
     """
 
     def __init__(self, path: str, prolog: str, docs: list[Doc], crlf: bool, original: str):
-        self.path = path
         self.original_text = original
-        self._prolog = prolog
-        self._docs = docs
-        self._crlf = crlf
-        self._by_id: dict[int, Doc] = {}
-        for doc in docs:
-            self._by_id.setdefault(doc.file_id, doc)
-        self._changed: set[int] = set()
-        self._hierarchy: Hierarchy | None = None
-        self._sorted = all(a.file_id <= b.file_id for a, b in itertools.pairwise(docs))
-        self.generation: Generation = detect(docs, path)
+        self._docs = Documents(path, prolog, docs, crlf)
+
+    @property
+    def path(self) -> str:
+        return self._docs.path
+
+    @property
+    def era(self) -> SerializationEra:
+        """The serialization era the file was written in; new objects follow its layout."""
+        return self._docs.era
+
+    @property
+    def is_scene(self) -> bool:
+        """A ``.unity`` scene (it has the settings objects) rather than a prefab."""
+        return self._docs.is_scene
 
     # ----- loading and output -----------------------------------------------------------------
 
@@ -82,20 +94,20 @@ class SceneDocument:
 
     def text(self) -> str:
         """The current content; byte-identical to the input when nothing was edited."""
-        joined = self._prolog + "".join(doc.text for doc in self._docs)
-        return joined.replace("\n", "\r\n") if self._crlf else joined
+        return self._docs.text()
 
     @property
     def changed(self) -> bool:
-        return bool(self._changed) and self.text() != self.original_text
+        return bool(self._docs.changed) and self.text() != self.original_text
 
     def diff(self) -> str:
         """Unified diff from the loaded text to the current one (empty when unchanged)."""
-        return diff(self.original_text, self.text(), self.path) if self._changed else ""
+        return diff(self.original_text, self.text(), self.path) if self._docs.changed else ""
 
     def validate(self) -> list[Diagnostic]:
         """Every problem that would make the file unsafe to write (empty list: all good)."""
-        return validate_docs(self.path, self._prolog, self._docs, self._changed)
+        docs = self._docs
+        return validate_docs(self.path, docs.prolog, docs.in_order, docs.changed)
 
     def write(self, path: str | Path | None = None) -> bool:
         """Validate, then write atomically if the bytes changed; return whether it wrote."""
@@ -108,15 +120,13 @@ class SceneDocument:
 
     @property
     def hierarchy(self) -> Hierarchy:
-        if self._hierarchy is None:
-            self._hierarchy = build_hierarchy(self._docs, self._by_id)
-        return self._hierarchy
+        return self._docs.hierarchy
 
     def documents(self) -> list[Doc]:
-        return list(self._docs)
+        return list(self._docs.in_order)
 
     def document(self, file_id: int) -> Doc | None:
-        return self._by_id.get(file_id)
+        return self._docs.get(file_id)
 
     def gameobjects(self) -> list[GameObject]:
         """Every GameObject (and PrefabInstance node), in hierarchy order."""
@@ -142,31 +152,30 @@ class SceneDocument:
     def find_gameobject(self, path: str) -> GameObject:
         """The unique GameObject at ``path`` (``Robot/base_link/camera``).
 
-        Raises ``UserError`` listing the candidates when the path is ambiguous, or the names
-        that do exist at the first level that does not match.
+        Raises ``UserError`` listing the candidates when the path is ambiguous, or
+        ``GameObjectNotFound`` with the names that do exist at the first level that does not
+        match.
         """
         found, missing_at = self._search(path)
         if missing_at is not None:
             raise self._missing_error(path, found, missing_at)
         return self._view(self._unique(path, found))
 
-    def components_of(self, go: GameObject | str) -> list[Component]:
+    def components_of(self, go: GameObject | str) -> list[SceneComponent]:
         """Components of ``go`` in ``m_Component`` order (Transform first)."""
         target = self._go(go)
-        return [self.component(i) for i in target.component_ids if i in self._by_id]
+        return [self.component(i) for i in target.component_ids if i in self._docs]
 
-    def component(self, file_id: int) -> Component:
-        doc = self._by_id.get(file_id)
-        if doc is None:
-            raise UserError(f"{self.path}: no object with fileID {file_id}")
+    def component(self, file_id: int) -> SceneComponent:
+        doc = self._docs.require(file_id)
         script = F.script_of(doc) if doc.class_id == 114 else None
         ref = ScriptRef(script[1], script[0], script[2]) if script else None
         owner = F.ref_value(doc, "m_GameObject") or 0
-        return Component(doc.file_id, doc.class_id, doc.type_name, owner, ref, doc.stripped)
+        return SceneComponent(doc.file_id, doc.class_id, doc.type_name, owner, ref, doc.stripped)
 
     def find_component(
         self, go: GameObject | str, script_guid: str, script_file_id: int = MONOSCRIPT_FILE_ID
-    ) -> Component | None:
+    ) -> SceneComponent | None:
         """The first component of ``go`` running that script, or None."""
         for comp in self.components_of(go):
             if (
@@ -177,49 +186,57 @@ class SceneDocument:
                 return comp
         return None
 
-    def field(self, component: Component | int, name: str) -> object:
+    def field(self, component: SceneComponent | int, name: str) -> object:
         """A top-level field read with a string-only YAML loader (None when absent)."""
         return F.parse_field(self._doc_of(component), name)
 
-    # ----- edits (implemented in _edits) ------------------------------------------------------
+    # ----- edits (found here, carried out by _edits) --------------------------------------------
 
     def ensure_gameobject(self, path: str, create: bool = True) -> GameObject:
-        """The GameObject at ``path``; missing levels are created (with a Transform) if asked."""
-        from unityscaffold.unity._edits import ensure_gameobject
+        """The GameObject at ``path``; missing levels are created (with a Transform) if asked.
 
-        return ensure_gameobject(self, path, create)
+        Without ``create`` a missing level raises ``GameObjectNotFound``.
+        """
+        found, missing_at = self._search(path)
+        if missing_at is None:
+            return self._view(self._unique(path, found))
+        if not create:
+            raise self._missing_error(path, found, missing_at)
+        names = _split_path(path)
+        parent = None
+        if missing_at > 0:
+            parent = self._view(self._unique("/".join(names[:missing_at]), found))
+        return self._view(_edits.create_path(self._docs, parent, names, missing_at))
 
     def ensure_component(
         self, go: GameObject | str, script: ScriptRef, fields: Fields = ()
-    ) -> Component:
+    ) -> SceneComponent:
         """Attach ``script`` to ``go`` or update the one already there; idempotent.
 
         ``fields`` are written in the given order on a new component; on an existing one,
         values that already match keep their bytes and missing fields are inserted following
         that order (which should be the script's declaration order).
         """
-        from unityscaffold.unity._edits import ensure_component
+        items = _field_list(fields)
+        target = self._go(go)
+        existing = self.find_component(target, script.guid, script.file_id)
+        file_id = _edits.ensure_component(self._docs, target, existing, script, items)
+        return self.component(file_id)
 
-        return ensure_component(self, go, script, _field_list(fields))
-
-    def set_fields(self, component: Component | int, fields: Fields) -> bool:
+    def set_fields(self, component: SceneComponent | int, fields: Fields) -> bool:
         """Set top-level fields of a component; return whether the text changed."""
-        from unityscaffold.unity._edits import set_fields
+        return _edits.set_fields(self._docs, self._doc_of(component), _field_list(fields))
 
-        return set_fields(self, self._doc_of(component), _field_list(fields))
-
-    def remove_component(self, component: Component | int) -> bool:
+    def remove_component(self, component: SceneComponent | int) -> bool:
         """Remove a component; references to it elsewhere in the file become ``{fileID: 0}``."""
-        from unityscaffold.unity._edits import remove_component
-
         file_id = component if isinstance(component, int) else component.file_id
-        return remove_component(self, file_id)
+        return _edits.remove_component(self._docs, file_id)
 
-    # ----- internals shared with _edits ---------------------------------------------------------
+    # ----- lookups ------------------------------------------------------------------------------
 
     def _view(self, node_id: int) -> GameObject:
         node = self.hierarchy.nodes[node_id]
-        doc = self._by_id.get(node_id)
+        doc = self._docs.get(node_id)
         components = (
             tuple(F.list_refs(doc, "m_Component")) if doc is not None and doc.class_id == 1 else ()
         )
@@ -239,12 +256,9 @@ class SceneDocument:
             raise UserError(f"{self.path}: GameObject &{go.file_id} ({go.path}) is not in the file")
         return self._view(go.file_id)
 
-    def _doc_of(self, component: Component | int) -> Doc:
+    def _doc_of(self, component: SceneComponent | int) -> Doc:
         file_id = component if isinstance(component, int) else component.file_id
-        doc = self._by_id.get(file_id)
-        if doc is None:
-            raise UserError(f"{self.path}: no object with fileID {file_id}")
-        return doc
+        return self._docs.require(file_id)
 
     def _search(self, path: str) -> tuple[list[int], int | None]:
         """Candidates for each level of ``path``; the index of the first level with none."""
@@ -280,47 +294,9 @@ class SceneDocument:
         existing = sorted({n for p in pool for n in self.hierarchy.names_under(p)})
         where = f"under '{prefix}'" if prefix else "at the root"
         shown = ", ".join(repr(n) for n in existing[:30]) or "none"
-        return UserError(
-            f"{self.path}: no GameObject named '{names[level]}' {where}; names there: {shown}",
-            hint="ask for it to be created: `scene attach --create`, "
-            "or `create: true` in the manifest",
+        return GameObjectNotFound(
+            f"{self.path}: no GameObject named '{names[level]}' {where}; names there: {shown}"
         )
-
-    def _insert(self, doc: Doc, index: int | None = None) -> None:
-        """Insert a new document at ``index``, or by fileID order as Unity sorts scenes."""
-        if index is None:
-            if self._sorted:
-                index = bisect.bisect_right(self._docs, doc.file_id, key=lambda d: d.file_id)
-            else:
-                index = next(
-                    (i for i, d in enumerate(self._docs) if d.file_id > doc.file_id),
-                    len(self._docs),
-                )
-        else:
-            self._sorted = False
-        self._docs.insert(index, doc)
-        self._by_id[doc.file_id] = doc
-        self._changed.add(doc.file_id)
-
-    def _location(self, doc: Doc) -> SourceLocation:
-        """Where ``doc``'s header is in the current text (line 0 if it is no longer there)."""
-        line = self._prolog.count("\n") + 1
-        for each in self._docs:
-            if each is doc:
-                return SourceLocation(self.path, line, 0, doc.header)
-            line += each.text.count("\n")
-        return SourceLocation(self.path, 0, 0, doc.header)
-
-    def _touch(self, doc: Doc) -> None:
-        self._changed.add(doc.file_id)
-
-    def _remove(self, doc: Doc) -> None:
-        self._docs.remove(doc)
-        del self._by_id[doc.file_id]
-        self._changed.add(doc.file_id)
-
-    def _invalidate(self) -> None:
-        self._hierarchy = None
 
 
 def _split_path(path: str) -> list[str]:

@@ -16,7 +16,7 @@ from collections.abc import Mapping
 import yaml
 
 from unityscaffold.errors import UserError
-from unityscaffold.unity.index import Component
+from unityscaffold.unity.index import SceneComponent
 from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.values import AssetRef, FieldValue, InlineMap, ObjectRef
 
@@ -34,7 +34,7 @@ def parse_assignment(text: str) -> tuple[str, str]:
     return name.strip(), value
 
 
-def component_label(comp: Component, script_names: Mapping[str, str]) -> str:
+def component_label(comp: SceneComponent, script_names: Mapping[str, str]) -> str:
     """A component's readable name: its class, or its script's class name, or the GUID."""
     if comp.script is None:
         return comp.type_name if comp.class_id != 114 else "MonoBehaviour (missing script)"

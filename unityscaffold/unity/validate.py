@@ -15,8 +15,8 @@ import yaml
 
 from unityscaffold.errors import Diagnostic, SourceLocation
 from unityscaffold.unity import _fields as F
+from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity._split import Doc
-from unityscaffold.unity.generation import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 
 __all__ = ["validate_docs"]
 

@@ -1,8 +1,8 @@
 """Text of new GameObject, Transform and MonoBehaviour documents in a file's own layout.
 
 The field order (and any field we have no opinion about) is copied from an existing object of
-the same class in the same file when there is one; built-in layouts per generation are the
-fallback. Values we set ourselves are the defaults Unity gives a fresh object.
+the same class in the same file when there is one; built-in layouts per serialization era are
+the fallback. Values we set ourselves are the defaults Unity gives a fresh object.
 """
 
 from __future__ import annotations
@@ -11,8 +11,8 @@ from collections.abc import Mapping, Sequence
 
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._emit import emit_field
+from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._split import Doc
-from unityscaffold.unity.generation import Generation
 from unityscaffold.unity.values import ScriptRef
 
 __all__ = ["component_item", "new_gameobject", "new_monobehaviour", "new_transform"]
@@ -48,13 +48,13 @@ _COMMON = {
 }
 
 
-def _builtin_layout(kind: str, gen: Generation) -> list[str]:
-    head = _MODERN if gen.modern_prefab_fields else _LEGACY
+def _builtin_layout(kind: str, era: SerializationEra) -> list[str]:
+    head = _MODERN if era.modern_prefab_fields else _LEGACY
     if kind == "GameObject":
         return [*head, "serializedVersion", *_GO_TAIL]
     if kind == "MonoBehaviour":
         return [*head, *_MB_TAIL]
-    if gen.root_order:
+    if era.root_order:
         return [
             *head,
             "m_GameObject",
@@ -79,12 +79,12 @@ def _builtin_layout(kind: str, gen: Generation) -> list[str]:
 def _render(
     header: str,
     kind: str,
-    gen: Generation,
+    era: SerializationEra,
     exemplar: Doc | None,
     values: Mapping[str, str | list[str]],
     stop_after: str | None = None,
 ) -> str:
-    layout = F.field_names(exemplar) if exemplar is not None else _builtin_layout(kind, gen)
+    layout = F.field_names(exemplar) if exemplar is not None else _builtin_layout(kind, era)
     if stop_after is not None and stop_after in layout:
         layout = layout[: layout.index(stop_after) + 1]
     lines = [header, f"{kind}:"]
@@ -105,20 +105,20 @@ def _prefab_internal(exemplar: Doc | None) -> str:
     return copied or _NULL
 
 
-def component_item(gen: Generation, class_id: int, file_id: int) -> str:
+def component_item(era: SerializationEra, class_id: int, file_id: int) -> str:
     """One ``m_Component`` entry in the file's style."""
-    key = str(class_id) if gen.classid_component_items else "component"
+    key = str(class_id) if era.classid_component_items else "component"
     return f"  - {key}: {{fileID: {file_id}}}"
 
 
 def new_gameobject(
-    gen: Generation, exemplar: Doc | None, file_id: int, name: str, transform_id: int
+    era: SerializationEra, exemplar: Doc | None, file_id: int, name: str, transform_id: int
 ) -> str:
-    version = "6" if gen.modern_prefab_fields else "4" if gen.classid_component_items else "5"
+    version = "6" if era.modern_prefab_fields else "4" if era.classid_component_items else "5"
     values: dict[str, str | list[str]] = {
         **_COMMON,
         "m_PrefabInternal": _prefab_internal(exemplar),
-        "m_Component": ["  m_Component:", component_item(gen, 4, transform_id)],
+        "m_Component": ["  m_Component:", component_item(era, 4, transform_id)],
         "m_Layer": "0",
         "m_Name": emit_field("m_Name", name),
         "m_TagString": "Untagged",
@@ -129,11 +129,11 @@ def new_gameobject(
     }
     if exemplar is None:
         values["serializedVersion"] = version
-    return _render(f"--- !u!1 &{file_id}", "GameObject", gen, exemplar, values)
+    return _render(f"--- !u!1 &{file_id}", "GameObject", era, exemplar, values)
 
 
 def new_transform(
-    gen: Generation,
+    era: SerializationEra,
     exemplar: Doc | None,
     file_id: int,
     gameobject_id: int,
@@ -156,19 +156,19 @@ def new_transform(
         values["m_RootOrder"] = str(root_order)
     if exemplar is None:
         values["serializedVersion"] = "2"
-    return _render(f"--- !u!4 &{file_id}", "Transform", gen, exemplar, values)
+    return _render(f"--- !u!4 &{file_id}", "Transform", era, exemplar, values)
 
 
-def class_identifier(gen: Generation, script: ScriptRef) -> str:
+def class_identifier(era: SerializationEra, script: ScriptRef) -> str:
     """``m_EditorClassIdentifier``: empty, or ``Asm::Ns.Class`` in files that use that form."""
-    if not gen.qualified_class_identifier or not script.class_name:
+    if not era.qualified_class_identifier or not script.class_name:
         return ""
     qualified = f"{script.namespace}.{script.class_name}" if script.namespace else script.class_name
     return f"{script.assembly or 'Assembly-CSharp'}::{qualified}"
 
 
 def new_monobehaviour(
-    gen: Generation,
+    era: SerializationEra,
     exemplar: Doc | None,
     file_id: int,
     gameobject_id: int,
@@ -183,10 +183,10 @@ def new_monobehaviour(
         "m_EditorHideFlags": "0",
         "m_Script": f"{{fileID: {script.file_id}, guid: {script.guid}, type: {script.type}}}",
         "m_Name": ["  m_Name: "],
-        "m_EditorClassIdentifier": [f"  m_EditorClassIdentifier: {class_identifier(gen, script)}"],
+        "m_EditorClassIdentifier": [f"  m_EditorClassIdentifier: {class_identifier(era, script)}"],
     }
     stop = "m_EditorClassIdentifier"
     if exemplar is not None and stop not in F.spans(exemplar):
         stop = "m_Name"
-    text = _render(f"--- !u!114 &{file_id}", "MonoBehaviour", gen, exemplar, values, stop)
+    text = _render(f"--- !u!114 &{file_id}", "MonoBehaviour", era, exemplar, values, stop)
     return text + "".join(line + "\n" for line in field_lines)
