@@ -93,4 +93,6 @@ components:
 """,
     )
     assert run.code == 2
-    assert "no GameObject named 'Nowhere'" in run.err and "`create: true`" in run.err
+    assert "no GameObject named 'Nowhere'" in run.err
+    hint = run.err.split("hint: ", 1)[1]
+    assert "`create: true`" in hint and "--create" not in hint

@@ -181,6 +181,18 @@ def test_user_mistakes_exit_2_with_a_message_and_write_nothing(
     assert scene.read_bytes() == before
 
 
+def test_a_missing_gameobject_hint_names_the_create_flag(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    scene = project / "Assets" / "Scenes" / "Main.unity"
+    code, _, err = _run(
+        capsys, "scene", "attach", scene, "-g", "Robot/arm", "--guid", CONNECTOR_GUID
+    )
+    assert code == 2 and "no GameObject named 'Robot' at the root" in err
+    hint = err.split("hint: ", 1)[1]
+    assert "--create" in hint and "create: true" not in hint
+
+
 @pytest.mark.parametrize(
     ("content", "message"),
     [

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from unityscaffold.errors import LocatedError, UserError
-from unityscaffold.unity.scene import SceneDocument
+from unityscaffold.unity.scene import GameObjectNotFound, SceneDocument
 from unityscaffold.unity.values import AssetRef, Enum, InlineMap, ObjectRef, ScriptRef
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "unity"
@@ -175,8 +175,11 @@ def test_new_children_get_their_sibling_index_as_root_order(scene_2020: SceneDoc
 
 
 def test_gameobject_creation_is_refused_unless_asked(scene_2020: SceneDocument) -> None:
-    with pytest.raises(UserError, match="names there: 'Demo', 'Directional Light', 'Main Camera'"):
+    with pytest.raises(
+        GameObjectNotFound, match="names there: 'Demo', 'Directional Light', 'Main Camera'"
+    ) as info:
         scene_2020.ensure_gameobject("Robot", create=False)
+    assert info.value.hint is None  # how to create it depends on the command: its caller says
 
 
 def test_file_ids_depend_on_names_not_on_where_the_file_is(tmp_path: Path) -> None:
