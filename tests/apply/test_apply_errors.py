@@ -63,7 +63,12 @@ def test_duplicate_topic_is_refused(sample):
 
 def test_a_missing_gameobject_with_creation_off_lists_what_exists(sample):
     _edit(sample, "gameobject: Robot/Lidar}", "gameobject: Robot/Lidar2, create: false}")
-    _apply_fails(sample, "robot.yaml:", "Lidar2", "Lidar")
+    err = _apply_fails(sample, "robot.yaml:21:18: error: ")
+    # The whole first line: the missing name, where it was looked for, and the one name there.
+    first_line = err.splitlines()[0]
+    assert first_line.endswith(
+        "Main.unity: no GameObject named 'Lidar2' under 'Robot'; names there: 'Lidar'"
+    ), first_line
 
 
 def test_an_output_folder_leaving_the_project_is_refused(sample):
