@@ -6,7 +6,7 @@ import pytest
 from codegen_helpers import generate_data
 
 from unityscaffold.codegen import Generation
-from unityscaffold.codegen.views import doc_lines
+from unityscaffold.codegen._views import doc_lines
 from unityscaffold.interfaces.model import Dialect
 
 

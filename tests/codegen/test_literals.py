@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from unityscaffold.codegen.literals import array_literal, literal, string_literal
+from unityscaffold.codegen._literals import array_literal, literal, string_literal
 
 
 @pytest.mark.parametrize(

@@ -12,12 +12,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from unityscaffold.codegen import literals
+from unityscaffold.codegen import _literals
 from unityscaffold.codegen._build import FileContext
 from unityscaffold.codegen._references import References
+from unityscaffold.codegen._views import ActionView, ActionWrapperView, FileHeader
 from unityscaffold.codegen.naming import CsClass
 from unityscaffold.codegen.roles import WRAPPER_PAYLOAD, ClassRole
-from unityscaffold.codegen.views import ActionView, ActionWrapperView, FileHeader
 from unityscaffold.interfaces.model import Dialect
 
 __all__ = ["ActionClasses", "RuntimeTypes", "build_action", "build_wrapper"]
@@ -128,7 +128,7 @@ def build_wrapper(
         header=FileHeader(source, identity, ctx.define, cls.namespace, refs.usings),
         class_name=cls.name,
         base=f"{_base(ctx, base)}<{payload_type}>",
-        ros_name=literals.string_literal(ros_name),
+        ros_name=_literals.string_literal(ros_name),
         doc=(),
         payload=payload,
         payload_type=payload_type,
@@ -158,7 +158,7 @@ def build_action(
         header=FileHeader(source, identity, ctx.define, cls.namespace, refs.usings),
         class_name=cls.name,
         base=f"{_base(ctx, 'Action')}<{', '.join(names)}>",
-        ros_name=literals.string_literal(ros_name),
+        ros_name=_literals.string_literal(ros_name),
         doc=(),
         parts=parts,
         parameters=", ".join(f"{t} {n}" for t, n in parts),

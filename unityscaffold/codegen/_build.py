@@ -5,11 +5,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from unityscaffold.codegen import literals
+from unityscaffold.codegen import _literals
 from unityscaffold.codegen._references import KnownClasses, References
-from unityscaffold.codegen.naming import CsClass, escape_identifier
-from unityscaffold.codegen.types import ROS1_TIME_TYPES, primitive_type
-from unityscaffold.codegen.views import (
+from unityscaffold.codegen._types import ROS1_TIME_TYPES, primitive_type
+from unityscaffold.codegen._views import (
     ConstantView,
     FileHeader,
     MemberView,
@@ -17,6 +16,7 @@ from unityscaffold.codegen.views import (
     SizeCheck,
     doc_lines,
 )
+from unityscaffold.codegen.naming import CsClass, escape_identifier
 from unityscaffold.errors import LocatedError, SourceLocation, located_at
 from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
 
@@ -60,14 +60,14 @@ def _initial(ref: TypeRef, element: str, primitive: str | None, default: object)
     if default is not None:
         assert primitive is not None
         if isinstance(default, tuple):
-            return literals.array_literal(default, primitive)
-        return literals.literal(default, primitive)  # type: ignore[arg-type]
+            return _literals.array_literal(default, primitive)
+        return _literals.literal(default, primitive)  # type: ignore[arg-type]
     if primitive is None:
         single = f"new {element}()"
     elif primitive == "string":
         single = '""'
     else:
-        single = literals.literal(0, primitive)
+        single = _literals.literal(0, primitive)
     if ref.array is ArrayKind.NONE:
         return single
     if ref.array is ArrayKind.FIXED and ref.size:
@@ -87,7 +87,7 @@ def _check(ref: TypeRef, name: str, field_name: str) -> SizeCheck | None:
     else:
         return None
     backing = "_" + name.lstrip("@")
-    return SizeCheck(backing, condition, f"{literals.string_literal(text)} + value.Length")
+    return SizeCheck(backing, condition, f"{_literals.string_literal(text)} + value.Length")
 
 
 def _member(ctx: FileContext, refs: References, spec: MessageSpec, field: Field) -> MemberView:
@@ -119,7 +119,7 @@ def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> Consta
             f"constant '{constant.name}' has type {constant.type}, which C# constants cannot have",
         )
     try:
-        value = literals.literal(constant.value, cs_type)
+        value = _literals.literal(constant.value, cs_type)
     except ValueError as exc:
         raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
     name = escape_identifier(constant.name)
@@ -164,7 +164,7 @@ def build_message(
         header=header,
         class_name=cls.name,
         base=refs.name(ctx.message_base, qualified=ctx.qualify_runtime),
-        ros_name=literals.string_literal(ros_name),
+        ros_name=_literals.string_literal(ros_name),
         doc=doc_lines(spec.comment),
         constants=tuple(_constant(ctx, spec, c) for c in spec.constants),
         members=members,

@@ -13,9 +13,9 @@ from unityscaffold.codegen._actions import build_action, build_wrapper
 from unityscaffold.codegen._build import FileContext, build_message
 from unityscaffold.codegen._classes import ClassEntry, ClassSet, collect_classes, source_name
 from unityscaffold.codegen._identity import Identities
+from unityscaffold.codegen._views import View
 from unityscaffold.codegen.naming import CsClass
 from unityscaffold.codegen.roles import MESSAGE_ROLES, ClassRole
-from unityscaffold.codegen.views import View
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.resources import template_environment

@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from unityscaffold.codegen.literals import string_literal as csharp_string
+from unityscaffold.codegen._literals import string_literal as csharp_string
 from unityscaffold.resources import template_environment
 
 __all__ = [
