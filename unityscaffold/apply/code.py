@@ -13,6 +13,7 @@ from pathlib import Path
 from unityscaffold.apply.rossharp import RESERVED_NAMES
 from unityscaffold.codegen import ClassRole, Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
+from unityscaffold.codegen.naming import ClassClash
 from unityscaffold.codegen.scripts import (
     PublisherScript,
     ServiceClientScript,
@@ -20,7 +21,7 @@ from unityscaffold.codegen.scripts import (
     SubscriberScript,
     render_script,
 )
-from unityscaffold.errors import LocatedError, located_at
+from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
@@ -66,6 +67,37 @@ def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSp
             + ("geometry_msgs/Twist" if kind is MessageSpec else "std_srvs/Trigger"),
         )
     return found
+
+
+_Entry = tuple[Topic | Service, MessageSpec | ServiceSpec]
+
+
+def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> Generation:
+    """The C# for every entry's type; a problem is shown at the entry that brings it in."""
+    options = Options(manifest.ros, manifest.include_shipped, manifest.namespace)
+    specs = [spec for _, spec in entries]
+    try:
+        return generate(registry, specs, options)
+    except LocatedError:
+        raise  # it points into the interface file at fault
+    except UserError as error:
+        failure, where = error, None
+    # Codegen knows types, not manifest entries: point at the first entry whose types, with those
+    # of the entries before it, make generation fail (a clash can take two entries).
+    for count, (item, _) in enumerate(entries, start=1):
+        try:
+            generate(registry, specs[:count], options)
+        except UserError as error:
+            failure, where = error, item.locations.of("type")
+            break
+    if isinstance(failure, LocatedError):
+        raise failure  # the entry's types stop at a problem inside an interface file
+    hint = failure.hint
+    if isinstance(failure, ClassClash) and failure.with_shipped:
+        hint = "choose another root namespace with the manifest key `namespace:`"
+    if where is None:  # no entries: only the types every generation needs
+        raise UserError(failure.message, hint=hint)
+    raise LocatedError.at(where, failure.message, hint=hint)
 
 
 def _view(
@@ -151,11 +183,7 @@ def plan_code(
     items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
-    generation = generate(
-        registry,
-        [spec for _, spec in items],
-        Options(manifest.ros, manifest.include_shipped, manifest.namespace),
-    )
+    generation = _generate(manifest, registry, items)
     messages_dir = manifest.output_dir / "Messages"
     scripts_dir = manifest.output_dir / "Scripts"
     generated, created_once = [], []

@@ -32,7 +32,9 @@ def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
             lines.append(f"scene {scene.relative}:")
             lines += [f"  {action}" for action in scene.actions]
     lines += [f"note: {note}" for note in plan.notes]
-    lines += [f"edited by hand (apply will stop; --force overwrites): {c}" for c in plan.conflicts]
+    lines += [
+        f"edited by hand (apply will stop; apply --force overwrites): {c}" for c in plan.conflicts
+    ]
     if plan.in_sync and not plan.conflicts:
         lines.append("the project matches the manifest")
     return "\n".join(lines)

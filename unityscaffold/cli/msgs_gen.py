@@ -11,12 +11,20 @@ import typer
 from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
 from unityscaffold.codegen import Generation, Options, generate
 from unityscaffold.codegen.layout import output_files
+from unityscaffold.codegen.naming import ClassClash
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import ChangeKind, FileChange, plan_files, write_files
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 
 __all__ = ["register", "resolve_roots", "run"]
+
+# What resolves a ClassClash here, by whether the other class is one ROS# ships.
+_CLASH_HINTS = {
+    True: "generate into another root namespace with --namespace",
+    False: "ROS# names classes by package namespace and type name; rename one type, "
+    "or generate them separately with --namespace",
+}
 
 
 def _package_interfaces(registry: Registry, package: str) -> list[Interface]:
@@ -74,7 +82,10 @@ def run(
     _check_out_dir(out)
     registry = Registry.load(dialect, paths, use_environment=use_environment)
     roots = resolve_roots(registry, names, everything)
-    generation = generate(registry, roots, Options(dialect, include_shipped, namespace))
+    try:
+        generation = generate(registry, roots, Options(dialect, include_shipped, namespace))
+    except ClassClash as clash:
+        raise UserError(clash.message, hint=_CLASH_HINTS[clash.with_shipped]) from None
     changes = plan_files(output_files(generation, out))
     write_files(changes)
     return generation, changes

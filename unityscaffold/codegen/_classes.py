@@ -8,10 +8,10 @@ from pathlib import PurePath
 from unityscaffold.codegen._actions import ActionClasses, RuntimeTypes
 from unityscaffold.codegen._build import FileContext
 from unityscaffold.codegen._references import KnownClasses
-from unityscaffold.codegen._shipped import ROS1_HANDWRITTEN, shipped_classes
 from unityscaffold.codegen.naming import (
     ROSSHARP_MESSAGE,
     ROSSHARP_ROOT_NAMESPACE,
+    ClassClash,
     CsClass,
     class_name,
     namespace_segment,
@@ -19,7 +19,8 @@ from unityscaffold.codegen.naming import (
     validate_namespace,
 )
 from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX, ClassRole
-from unityscaffold.errors import LocatedError, SourceLocation, UserError
+from unityscaffold.codegen.shipped import ROS1_HANDWRITTEN, shipped_classes
+from unityscaffold.errors import LocatedError, SourceLocation
 from unityscaffold.interfaces.model import (
     ActionSpec,
     Dialect,
@@ -278,10 +279,10 @@ def _skip_reason(item: ClassEntry, dialect: Dialect, include_shipped: bool) -> s
     if shipped is None:
         return None
     if shipped != item.ros_message_name:
-        raise UserError(
+        raise ClassClash(
             f"{item.interface.full_name} would become {item.cs_class.full_name}, "
             f"a class ROS# already ships for {shipped}",
-            hint="generate into another root namespace with --namespace",
+            with_shipped=True,
         )
     return f"ROS# ships {item.cs_class.full_name}"
 
@@ -292,10 +293,9 @@ def _check_unique(items: list[ClassEntry]) -> None:
         other = seen.setdefault(item.cs_class, item)
         if other is not item:
             both = f"{other.interface.full_name} and {item.interface.full_name}"
-            raise UserError(
+            raise ClassClash(
                 f"{both} would both become C# class {item.cs_class.full_name}",
-                hint="ROS# names classes by package namespace and type name; rename "
-                "one type, or generate them separately with --namespace",
+                with_shipped=False,
             )
 
 

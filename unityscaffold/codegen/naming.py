@@ -14,6 +14,7 @@ __all__ = [
     "CSHARP_KEYWORDS",
     "ROSSHARP_MESSAGE",
     "ROSSHARP_ROOT_NAMESPACE",
+    "ClassClash",
     "CsClass",
     "class_name",
     "escape_identifier",
@@ -23,6 +24,25 @@ __all__ = [
     "rossharp_class",
     "validate_namespace",
 ]
+
+
+class ClassClash(UserError):
+    """Two things would become the same C# class: two ROS types, or (``with_shipped``) a type
+    and a class ROS# ships.
+
+    The hint names no option: another root namespace is what keeps a type apart from ROS#'s
+    classes, and that is a flag of ``msgs gen`` but a manifest key for ``apply``, so each
+    command words its own hint.
+    """
+
+    def __init__(self, message: str, *, with_shipped: bool) -> None:
+        hint = (
+            "generate into another root namespace"
+            if with_shipped
+            else "ROS# names classes by package namespace and type name; rename one of the types"
+        )
+        super().__init__(message, hint=hint)
+        self.with_shipped = with_shipped
 
 
 @dataclass(frozen=True, slots=True, order=True)
@@ -110,7 +130,7 @@ def namespace_segment(package: str) -> str:
     if not is_identifier(segment) or segment in CSHARP_KEYWORDS:
         raise UserError(
             f"package '{package}' cannot become a C# namespace (got '{segment}')",
-            hint="use --namespace, or a package name that starts with a letter",
+            hint="the package name must start with a letter and hold only letters, digits and '_'",
         )
     return segment
 
