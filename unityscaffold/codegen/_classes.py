@@ -8,6 +8,7 @@ from pathlib import PurePath
 from unityscaffold.codegen._actions import ActionClasses, RuntimeTypes
 from unityscaffold.codegen._build import FileContext
 from unityscaffold.codegen._references import KnownClasses
+from unityscaffold.codegen._shipped import ROS1_HANDWRITTEN, shipped_classes
 from unityscaffold.codegen.naming import (
     ROSSHARP_MESSAGE,
     ROSSHARP_ROOT_NAMESPACE,
@@ -19,7 +20,6 @@ from unityscaffold.codegen.naming import (
     validate_namespace,
 )
 from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX, ClassRole
-from unityscaffold.codegen.shipped import ROS1_HANDWRITTEN, shipped_classes
 from unityscaffold.errors import LocatedError, SourceLocation
 from unityscaffold.interfaces.model import (
     ActionSpec,
