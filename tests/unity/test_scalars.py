@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from ruamel.yaml import YAML
 
 from unityscaffold.unity._emit import emit_field, value_equals
-from unityscaffold.unity.scalars import format_float, format_string, to_float32
+from unityscaffold.unity._scalars import format_float, format_string, to_float32
 from unityscaffold.unity.values import AssetRef, Enum, InlineMap, ObjectRef
 
 # Written by Unity itself (docs/unity-yaml.md#scalars and the corpus).

@@ -10,9 +10,9 @@ from unityscaffold.errors import LocatedError
 from unityscaffold.unity import _textops
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._split import split_text
+from unityscaffold.unity._validate import validate_docs
 from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.textdiff import diff
-from unityscaffold.unity.validate import validate_docs
 from unityscaffold.unity.values import ScriptRef
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "unity"

@@ -22,8 +22,8 @@ from unityscaffold.unity._builders import (
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._emit import emit_field, value_equals
+from unityscaffold.unity._fileids import stable_file_id
 from unityscaffold.unity._split import Doc
-from unityscaffold.unity.fileids import stable_file_id
 from unityscaffold.unity.index import GameObject, SceneComponent
 from unityscaffold.unity.values import FieldValue, ScriptRef
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
-from unityscaffold.unity.scalars import format_float, format_string, to_float32
+from unityscaffold.unity._scalars import format_float, format_string, to_float32
 from unityscaffold.unity.values import AssetRef, Enum, FieldValue, InlineMap, ObjectRef
 
 __all__ = ["emit_field", "flow_text", "value_equals"]

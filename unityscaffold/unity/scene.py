@@ -18,9 +18,9 @@ from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._split import Doc, split_text
+from unityscaffold.unity._validate import validate_docs
 from unityscaffold.unity.index import GameObject, Hierarchy, SceneComponent
 from unityscaffold.unity.textdiff import diff
-from unityscaffold.unity.validate import validate_docs
 from unityscaffold.unity.values import MONOSCRIPT_FILE_ID, FieldValue, ScriptRef
 
 __all__ = ["Fields", "GameObjectNotFound", "SceneDocument"]
