@@ -15,9 +15,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from unityscaffold.apply.files import plan_files, write_files
 from unityscaffold.codegen import Options, generate
 from unityscaffold.codegen.layout import output_files
+from unityscaffold.fileout import plan_files, write_files
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.resources import template_environment
@@ -31,11 +31,11 @@ def _run(
         registry = Registry.load(dialect)
     interfaces, problems = registry.parse_all()
     assert not problems, problems
-    generation = generate(registry, interfaces, Options(dialect, include_shipped=True))
+    code = generate(registry, interfaces, Options(dialect, include_shipped=True))
     generated = time.perf_counter() - start
-    written = write_files(plan_files(output_files(generation, out)))
+    written = write_files(plan_files(output_files(code, out)))
     elapsed = time.perf_counter() - start
-    return registry, len(generation.files), len(written), generated, elapsed
+    return registry, len(code.files), len(written), generated, elapsed
 
 
 def main() -> None:

@@ -1,4 +1,4 @@
-"""Helpers for the C# generator's tests: the test packages, generation, and ROS#'s runtime.
+"""Helpers for the C# generator's tests: the test packages, code, and ROS#'s runtime.
 
 A named module rather than ``conftest.py``, so tests import it explicitly (``conftest`` keeps
 only fixtures, and several folders have one).
@@ -10,7 +10,7 @@ from pathlib import Path
 
 from csharp import ROSSHARP_STUB, Compiled, compile_cs
 
-from unityscaffold.codegen import Generation, Options, generate
+from unityscaffold.codegen import GeneratedCode, Options, generate
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 
@@ -19,10 +19,10 @@ DATA = HERE / "data"
 GOLDEN = HERE / "golden"
 
 
-def write_tree(generation: Generation, out: Path) -> list[Path]:
+def write_tree(code: GeneratedCode, out: Path) -> list[Path]:
     """Write every generated file under ``out``; return their paths."""
     paths = []
-    for file in generation.files:
+    for file in code.files:
         path = out / file.path
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(file.text, encoding="utf-8", newline="\n")
@@ -30,7 +30,7 @@ def write_tree(generation: Generation, out: Path) -> list[Path]:
     return paths
 
 
-def generate_all(dialect: Dialect, **options: object) -> Generation:
+def generate_all(dialect: Dialect, **options: object) -> GeneratedCode:
     """C# for every type found (the Debian ROS 1 set or the Jazzy wheels)."""
     registry = Registry.load(dialect)
     interfaces, problems = registry.parse_all()
@@ -38,7 +38,7 @@ def generate_all(dialect: Dialect, **options: object) -> Generation:
     return generate(registry, interfaces, Options(dialect, **options))  # type: ignore[arg-type]
 
 
-def generate_data(dialect: Dialect, names: list[str], **options: object) -> Generation:
+def generate_data(dialect: Dialect, names: list[str], **options: object) -> GeneratedCode:
     """C# for ``names`` from the test packages in ``data/``."""
     folder = DATA / ("ros1" if dialect is Dialect.ROS1 else "ros2")
     registry = Registry.load(dialect, [folder])
@@ -46,20 +46,20 @@ def generate_data(dialect: Dialect, names: list[str], **options: object) -> Gene
     return generate(registry, roots, Options(dialect, **options))  # type: ignore[arg-type]
 
 
-def compile_all(mcs: str, dialect: Dialect, out: Path) -> tuple[Generation, Compiled]:
+def compile_all(mcs: str, dialect: Dialect, out: Path) -> tuple[GeneratedCode, Compiled]:
     """Every type of ``dialect``, ROS#-shipped ones included, compiled against the stub."""
-    generation = generate_all(dialect, include_shipped=True)
-    sources = [ROSSHARP_STUB, *write_tree(generation, out / "src")]
+    code = generate_all(dialect, include_shipped=True)
+    sources = [ROSSHARP_STUB, *write_tree(code, out / "src")]
     name = "AllRos1.dll" if dialect is Dialect.ROS1 else "AllRos2.dll"
-    return generation, compile_cs(mcs, sources, out / name, ros2=dialect is Dialect.ROS2)
+    return code, compile_cs(mcs, sources, out / name, ros2=dialect is Dialect.ROS2)
 
 
 def compile_runtime(mcs: str, dialect: Dialect, out: Path) -> Compiled:
     """A stand-in for ROS#'s runtime assembly: the stub plus every type ROS# ships that the
     test packages use (generated with --include-shipped)."""
     names = ["scaffold_test_msgs/Kitchen", "scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"]
-    generation = generate_data(dialect, names, include_shipped=True)
-    shipped = [f for f in generation.files if not f.path.startswith("ScaffoldTest/")]
+    code = generate_data(dialect, names, include_shipped=True)
+    shipped = [f for f in code.files if not f.path.startswith("ScaffoldTest/")]
     sources = [ROSSHARP_STUB]
     for file in shipped:
         path = out / "src" / file.path

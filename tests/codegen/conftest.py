@@ -13,21 +13,21 @@ import pytest
 from codegen_helpers import compile_all, compile_runtime
 from csharp import Compiled
 
-from unityscaffold.codegen import Generation
+from unityscaffold.codegen import GeneratedCode
 from unityscaffold.interfaces.model import Dialect
 
 
 @pytest.fixture(scope="session")
 def compiled_all_ros1(
     mcs: str, ros1_share: Path, tmp_path_factory: pytest.TempPathFactory
-) -> tuple[Generation, Compiled]:
+) -> tuple[GeneratedCode, Compiled]:
     return compile_all(mcs, Dialect.ROS1, tmp_path_factory.mktemp("all_ros1"))
 
 
 @pytest.fixture(scope="session")
 def compiled_all_ros2(
     mcs: str, ros2_share: Path, tmp_path_factory: pytest.TempPathFactory
-) -> tuple[Generation, Compiled]:
+) -> tuple[GeneratedCode, Compiled]:
     return compile_all(mcs, Dialect.ROS2, tmp_path_factory.mktemp("all_ros2"))
 
 

@@ -7,41 +7,41 @@ from pathlib import Path
 from codegen_helpers import generate_data, write_tree
 from csharp import Compiled, compile_cs
 
-from unityscaffold.codegen import Generation
+from unityscaffold.codegen import GeneratedCode
 from unityscaffold.interfaces.model import Dialect
 
 
 def test_all_debian_ros1_types_compile_without_ros2_define(
-    compiled_all_ros1: tuple[Generation, Compiled],
+    compiled_all_ros1: tuple[GeneratedCode, Compiled],
 ) -> None:
-    generation, compiled = compiled_all_ros1
+    code, compiled = compiled_all_ros1
     compiled.assert_clean()
-    assert len(generation.files) > 200
-    assert {s.ros_type for s in generation.skipped} == {"std_msgs/Time", "std_msgs/Duration"}
+    assert len(code.files) > 200
+    assert {s.ros_type for s in code.skipped} == {"std_msgs/Time", "std_msgs/Duration"}
 
 
 def test_all_jazzy_interfaces_compile_with_ros2_define(
-    compiled_all_ros2: tuple[Generation, Compiled],
+    compiled_all_ros2: tuple[GeneratedCode, Compiled],
 ) -> None:
-    generation, compiled = compiled_all_ros2
+    code, compiled = compiled_all_ros2
     compiled.assert_clean()
-    paths = {f.path for f in generation.files}
+    paths = {f.path for f in code.files}
     assert {
         "Test/msg/Arrays.cs",
         "Test/action/FibonacciActionGoal.cs",
         "BuiltinInterfaces/msg/Time.cs",
         "Std/srv/SetBoolRequest.cs",
     } <= paths
-    assert not generation.skipped
+    assert not code.skipped
 
 
 def _custom(
     mcs: str, tmp: Path, dialect: Dialect, runtime: Compiled, **options: object
 ) -> Compiled:
     names = ["scaffold_test_msgs/Kitchen", "scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"]
-    generation = generate_data(dialect, names, **options)
-    assert all(f.path.startswith("ScaffoldTest/") for f in generation.files)
-    sources = write_tree(generation, tmp / "src")
+    code = generate_data(dialect, names, **options)
+    assert all(f.path.startswith("ScaffoldTest/") for f in code.files)
+    sources = write_tree(code, tmp / "src")
     return compile_cs(
         mcs,
         sources,
@@ -67,10 +67,10 @@ def test_another_root_namespace_generates_everything_and_compiles_beside_rosshar
     mcs: str, tmp_path: Path, runtime_ros1: Compiled
 ) -> None:
     names = ["scaffold_test_msgs/Kitchen", "scaffold_test_msgs/Cook"]
-    generation = generate_data(Dialect.ROS1, names, namespace="MyRobot.Messages")
-    assert "Geometry/msg/Pose.cs" in {f.path for f in generation.files}
-    assert not generation.skipped
-    sources = write_tree(generation, tmp_path / "src")
+    code = generate_data(Dialect.ROS1, names, namespace="MyRobot.Messages")
+    assert "Geometry/msg/Pose.cs" in {f.path for f in code.files}
+    assert not code.skipped
+    sources = write_tree(code, tmp_path / "src")
     compile_cs(
         mcs, sources, tmp_path / "Ns.dll", ros2=False, references=(runtime_ros1.assembly,)
     ).assert_clean()

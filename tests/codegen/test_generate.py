@@ -5,26 +5,28 @@ from __future__ import annotations
 import pytest
 from codegen_helpers import generate_data
 
-from unityscaffold.codegen import Generation
+from unityscaffold.codegen import GeneratedCode
 from unityscaffold.codegen._views import doc_lines
 from unityscaffold.interfaces.model import Dialect
 
 
-def _text(generation: Generation, path: str) -> str:
-    return next(f.text for f in generation.files if f.path == path)
+def _text(code: GeneratedCode, path: str) -> str:
+    return next(f.text for f in code.files if f.path == path)
 
 
 @pytest.fixture(scope="module")
-def ros1() -> Generation:
+def ros1() -> GeneratedCode:
     return generate_data(Dialect.ROS1, ["scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"])
 
 
 @pytest.fixture(scope="module")
-def ros2() -> Generation:
+def ros2() -> GeneratedCode:
     return generate_data(Dialect.ROS2, ["scaffold_test_msgs/Cook", "scaffold_test_msgs/Lookup"])
 
 
-def test_service_halves_both_carry_the_service_name(ros1: Generation, ros2: Generation) -> None:
+def test_service_halves_both_carry_the_service_name(
+    ros1: GeneratedCode, ros2: GeneratedCode
+) -> None:
     for half in ("Request", "Response"):
         assert 'RosMessageName = "scaffold_test_msgs/Lookup";' in _text(
             ros1, f"ScaffoldTest/srv/Lookup{half}.cs"
@@ -34,7 +36,7 @@ def test_service_halves_both_carry_the_service_name(ros1: Generation, ros2: Gene
         )
 
 
-def test_actions_get_rossharps_seven_classes(ros1: Generation, ros2: Generation) -> None:
+def test_actions_get_rossharps_seven_classes(ros1: GeneratedCode, ros2: GeneratedCode) -> None:
     suffixes = (
         "Goal",
         "Result",
@@ -44,13 +46,15 @@ def test_actions_get_rossharps_seven_classes(ros1: Generation, ros2: Generation)
         "ActionFeedback",
         "Action",
     )
-    for generation, prefix in ((ros1, "scaffold_test_msgs/"), (ros2, "scaffold_test_msgs/action/")):
+    for code, prefix in ((ros1, "scaffold_test_msgs/"), (ros2, "scaffold_test_msgs/action/")):
         for suffix in suffixes:
-            text = _text(generation, f"ScaffoldTest/action/Cook{suffix}.cs")
+            text = _text(code, f"ScaffoldTest/action/Cook{suffix}.cs")
             assert f'RosMessageName = "{prefix}Cook{suffix}";' in text
 
 
-def test_ros1_and_ros2_action_wrappers_use_their_bases(ros1: Generation, ros2: Generation) -> None:
+def test_ros1_and_ros2_action_wrappers_use_their_bases(
+    ros1: GeneratedCode, ros2: GeneratedCode
+) -> None:
     assert (
         "CookActionGoal(Header header, GoalID goal_id, CookGoal goal) : base(header, goal_id)"
         in _text(ros1, "ScaffoldTest/action/CookActionGoal.cs")
@@ -61,12 +65,12 @@ def test_ros1_and_ros2_action_wrappers_use_their_bases(ros1: Generation, ros2: G
     )
 
 
-def test_files_are_guarded_by_the_ros_version(ros1: Generation, ros2: Generation) -> None:
+def test_files_are_guarded_by_the_ros_version(ros1: GeneratedCode, ros2: GeneratedCode) -> None:
     assert all("\n#if !ROS2\n" in f.text and f.text.endswith("}\n#endif\n") for f in ros1.files)
     assert all("\n#if ROS2\n" in f.text for f in ros2.files)
 
 
-def test_shipped_types_are_skipped_and_mapped_to_rossharps_classes(ros1: Generation) -> None:
+def test_shipped_types_are_skipped_and_mapped_to_rossharps_classes(ros1: GeneratedCode) -> None:
     skipped = {s.ros_type: s for s in ros1.skipped}
     assert "ROS# ships" in skipped["std_msgs/Header"].reason
     assert "Std/msg/Header.cs" not in {f.path for f in ros1.files}
@@ -74,7 +78,7 @@ def test_shipped_types_are_skipped_and_mapped_to_rossharps_classes(ros1: Generat
     assert header.full_name == "RosSharp.RosBridgeClient.MessageTypes.Std.Header"
 
 
-def test_class_map_names_every_role(ros1: Generation, ros2: Generation) -> None:
+def test_class_map_names_every_role(ros1: GeneratedCode, ros2: GeneratedCode) -> None:
     roles = ros1.classes["scaffold_test_msgs/action/Cook"]
     assert roles["action_goal"].name == "CookActionGoal"
     assert ros2.classes["scaffold_test_msgs/srv/Lookup"]["response"].full_name == (
@@ -104,11 +108,9 @@ def test_ros2_defaults_are_properties_initialised_in_the_constructor() -> None:
 
 
 def test_include_shipped_generates_shipped_types_but_never_ros1_time() -> None:
-    generation = generate_data(
-        Dialect.ROS1, ["std_msgs/Time", "std_msgs/Header"], include_shipped=True
-    )
-    assert [f.path for f in generation.files] == ["Std/msg/Header.cs"]
-    assert "hand-writes" in generation.skipped[0].reason
+    code = generate_data(Dialect.ROS1, ["std_msgs/Time", "std_msgs/Header"], include_shipped=True)
+    assert [f.path for f in code.files] == ["Std/msg/Header.cs"]
+    assert "hand-writes" in code.skipped[0].reason
 
 
 def test_doc_comments_escape_xml_and_drop_blank_ends() -> None:

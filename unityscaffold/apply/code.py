@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.apply.rossharp import RESERVED_NAMES
-from unityscaffold.codegen import ClassRole, Generation, Options, generate
+from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.naming import ClassClash
 from unityscaffold.codegen.scripts import (
@@ -51,7 +51,7 @@ class CodePlan:
     generated: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
     created_once: tuple[DesiredFile, ...]  # user halves and .meta files: written only if missing
     scripts: tuple[PlannedScript, ...]
-    generation: Generation
+    generation: GeneratedCode
 
 
 def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSpec | ServiceSpec:
@@ -72,7 +72,7 @@ def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSp
 _Entry = tuple[Topic | Service, MessageSpec | ServiceSpec]
 
 
-def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> Generation:
+def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> GeneratedCode:
     """The C# for every entry's type; a problem is shown at the entry that brings it in."""
     options = Options(manifest.ros, manifest.include_shipped, manifest.namespace)
     specs = [spec for _, spec in entries]
@@ -104,7 +104,7 @@ def _view(
     manifest: Manifest,
     item: Topic | Service,
     spec: MessageSpec | ServiceSpec,
-    generation: Generation,
+    generation: GeneratedCode,
 ) -> Script:
     common = {
         "class_name": item.class_name,

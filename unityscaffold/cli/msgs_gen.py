@@ -9,7 +9,7 @@ from pathlib import Path
 import typer
 
 from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
-from unityscaffold.codegen import Generation, Options, generate
+from unityscaffold.codegen import GeneratedCode, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.naming import ClassClash
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
@@ -77,31 +77,31 @@ def run(
     everything: bool,
     *,
     use_environment: bool = True,
-) -> tuple[Generation, list[FileChange]]:
+) -> tuple[GeneratedCode, list[FileChange]]:
     """Generate and write; returns what was generated and each file's change."""
     _check_out_dir(out)
     registry = Registry.load(dialect, paths, use_environment=use_environment)
     roots = resolve_roots(registry, names, everything)
     try:
-        generation = generate(registry, roots, Options(dialect, include_shipped, namespace))
+        code = generate(registry, roots, Options(dialect, include_shipped, namespace))
     except ClassClash as clash:
         raise UserError(clash.message, hint=_CLASH_HINTS[clash.with_shipped]) from None
-    changes = plan_files(output_files(generation, out))
+    changes = plan_files(output_files(code, out))
     write_files(changes)
-    return generation, changes
+    return code, changes
 
 
-def _report(generation: Generation, changes: list[FileChange], out: Path) -> None:
+def _report(code: GeneratedCode, changes: list[FileChange], out: Path) -> None:
     base = out.resolve()
     for change in changes:
         if change.kind is not ChangeKind.UNCHANGED:
             reason = f" ({change.reason})" if change.reason else ""
             typer.echo(f"{change.kind.value:9} {os.path.relpath(change.path, base)}{reason}")
-    for skipped in generation.skipped:
+    for skipped in code.skipped:
         typer.echo(f"{'skip':9} {skipped.path} ({skipped.ros_type}): {skipped.reason}")
     counts = {k: sum(1 for c in changes if c.kind is k) for k in ChangeKind}
     typer.echo(
-        f"{len(generation.files)} classes generated, {len(generation.skipped)} skipped; "
+        f"{len(code.files)} classes generated, {len(code.skipped)} skipped; "
         f"files: {counts[ChangeKind.CREATE]} created, {counts[ChangeKind.UPDATE]} updated, "
         f"{counts[ChangeKind.UNCHANGED]} unchanged, {counts[ChangeKind.SKIP]} kept"
     )
@@ -132,7 +132,7 @@ def register(app: typer.Typer) -> None:
         everything: bool = typer.Option(False, "--all", help="Generate every type found."),
     ) -> None:
         """Generate ROS# C# classes for types and everything they use."""
-        generation, changes = run(
+        code, changes = run(
             list(names or []),
             out,
             dialect_of(ros),
@@ -142,4 +142,4 @@ def register(app: typer.Typer) -> None:
             everything,
             use_environment=not no_env,
         )
-        _report(generation, changes, out)
+        _report(code, changes, out)

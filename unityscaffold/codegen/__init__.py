@@ -5,12 +5,12 @@ here is pure: it returns files and the ROS-type-to-class map, it never writes.
 """
 
 from unityscaffold.codegen.generate import (
+    GeneratedCode,
     GeneratedFile,
-    Generation,
     Options,
     SkippedClass,
     generate,
 )
 from unityscaffold.codegen.roles import ClassRole
 
-__all__ = ["ClassRole", "GeneratedFile", "Generation", "Options", "SkippedClass", "generate"]
+__all__ = ["ClassRole", "GeneratedCode", "GeneratedFile", "Options", "SkippedClass", "generate"]

@@ -25,7 +25,7 @@ __all__ = ["FileContext", "build_message", "message_references"]
 
 @dataclass(frozen=True, slots=True)
 class FileContext:
-    """What every file of one generation shares."""
+    """What every file of one ``generate`` call shares."""
 
     dialect: Dialect
     known: KnownClasses

@@ -20,7 +20,7 @@ from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.resources import template_environment
 
-__all__ = ["GeneratedFile", "Generation", "Options", "SkippedClass", "generate"]
+__all__ = ["GeneratedCode", "GeneratedFile", "Options", "SkippedClass", "generate"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,7 +59,7 @@ class SkippedClass:
 
 
 @dataclass(frozen=True, slots=True)
-class Generation:
+class GeneratedCode:
     """What one run produces, and which C# class each ROS type maps to.
 
     ``classes`` maps ``pkg/msg/Name``, ``pkg/srv/Name`` and ``pkg/action/Name`` (both ROS
@@ -108,7 +108,7 @@ def _view(class_set: ClassSet, ctx: FileContext, ids: Identities, item: ClassEnt
     )
 
 
-def generate(registry: Registry, roots: Iterable[Interface], options: Options) -> Generation:
+def generate(registry: Registry, roots: Iterable[Interface], options: Options) -> GeneratedCode:
     """C# for ``roots`` and every type they use; raises ``UserError`` on bad input."""
     class_set = collect_classes(
         registry, list(roots), options.dialect, options.include_shipped, options.namespace
@@ -125,7 +125,7 @@ def generate(registry: Registry, roots: Iterable[Interface], options: Options) -
         SkippedClass(i.path, i.interface.full_name, i.role, i.cs_class, i.skip_reason or "")
         for i in class_set.skipped
     ]
-    return Generation(
+    return GeneratedCode(
         tuple(sorted(files, key=lambda f: f.path)),
         tuple(sorted(skipped, key=lambda s: s.path)),
         class_set.class_map(),

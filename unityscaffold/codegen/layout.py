@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from unityscaffold.codegen.generate import Generation
+from unityscaffold.codegen.generate import GeneratedCode
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.unity.meta import folder_meta, guid_for, monoscript_meta
 from unityscaffold.unity.project import FALLBACK_SALT, find_project_root, project_salt
@@ -28,13 +28,13 @@ def _base_and_salt(out_dir: Path) -> tuple[Path, str, bool]:
     return out_dir.parent, FALLBACK_SALT, False
 
 
-def output_files(generation: Generation, out_dir: Path) -> list[DesiredFile]:
-    """Every file a generation puts under ``out_dir``: sources (UTF-8, LF) and metas."""
+def output_files(code: GeneratedCode, out_dir: Path) -> list[DesiredFile]:
+    """Every file ``code`` puts under ``out_dir``: sources (UTF-8, LF) and metas."""
     out_dir = out_dir.resolve()
     base, salt, in_project = _base_and_salt(out_dir)
     desired: list[DesiredFile] = []
     folders: set[Path] = set()
-    for file in generation.files:
+    for file in code.files:
         path = out_dir / file.path
         asset = path.relative_to(base).as_posix()
         desired.append(DesiredFile(path, file.text.encode("utf-8")))
