@@ -66,11 +66,11 @@ def test_a_failure_while_writing_leaves_nothing_behind(
     real = fileout._write_temp
     calls = []
 
-    def flaky(path: Path, content: bytes, mode: int) -> Path:
+    def flaky(path: Path, content: bytes, mode: int, durable: bool) -> Path:
         calls.append(path)
         if len(calls) == 3:
             raise OSError(28, "No space left on device", str(path))
-        return real(path, content, mode)
+        return real(path, content, mode, durable)
 
     monkeypatch.setattr(fileout, "_write_temp", flaky)
     changes = plan_files(

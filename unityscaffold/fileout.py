@@ -134,7 +134,7 @@ def _new_file_mode() -> int:
     return 0o666 & ~umask
 
 
-def _write_temp(path: Path, content: bytes, mode: int) -> Path:
+def _write_temp(path: Path, content: bytes, mode: int, durable: bool) -> Path:
     """``content`` in a new temporary file beside ``path``, with ``path``'s permission bits
     (``mode`` if ``path`` does not exist); the temporary file is removed if this fails."""
     handle, name = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
@@ -142,10 +142,12 @@ def _write_temp(path: Path, content: bytes, mode: int) -> Path:
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(content)
-            # On disk before the rename: after a crash the target holds the old bytes or the
-            # new ones, never an empty file (about 2 ms a file on ext4).
-            stream.flush()
-            os.fsync(stream.fileno())
+            if durable:
+                # On disk before the rename, so that after a power loss the target holds the
+                # old bytes or the new ones. About 2 ms a file on ext4: worth it for a scene,
+                # not for hundreds of generated files that the next apply rewrites anyway.
+                stream.flush()
+                os.fsync(stream.fileno())
         keep = path.stat().st_mode & 0o7777 if path.exists() else mode
         os.chmod(temp, keep)
     except BaseException:
@@ -154,7 +156,7 @@ def _write_temp(path: Path, content: bytes, mode: int) -> Path:
     return temp
 
 
-def _stage(todo: Sequence[FileChange]) -> list[tuple[Path, Path]]:
+def _stage(todo: Sequence[FileChange], durable: bool) -> list[tuple[Path, Path]]:
     """Every change written to a temporary file, as ``(temporary, target)`` pairs; on failure,
     the temporary files and the folders made for them are removed again."""
     created: list[Path] = []
@@ -166,7 +168,7 @@ def _stage(todo: Sequence[FileChange]) -> list[tuple[Path, Path]]:
         for change in todo:
             current = change.path
             _make_folders(change.path.parent, created, ready)
-            temps.append((_write_temp(change.path, change.content, mode), change.path))
+            temps.append((_write_temp(change.path, change.content, mode, durable), change.path))
     except BaseException as exc:
         for temp, _ in temps:
             temp.unlink(missing_ok=True)
@@ -195,9 +197,12 @@ def _replace_all(temps: Sequence[tuple[Path, Path]]) -> None:
             ) from None
 
 
-def write_files(changes: Sequence[FileChange]) -> list[Path]:
-    """Write the ``create``/``update`` changes all at once; returns the paths written."""
-    temps = _stage([c for c in changes if c.writes])
+def write_files(changes: Sequence[FileChange], *, durable: bool = False) -> list[Path]:
+    """Write the ``create``/``update`` changes all at once; returns the paths written.
+
+    ``durable`` flushes each file to disk before it replaces its target.
+    """
+    temps = _stage([c for c in changes if c.writes], durable)
     _replace_all(temps)
     return [path for _, path in temps]
 
@@ -205,7 +210,9 @@ def write_files(changes: Sequence[FileChange]) -> list[Path]:
 def write_if_changed(path: str | os.PathLike[str], data: str | bytes) -> bool:
     """Write ``data`` to ``path`` only if its bytes differ; return whether the file was written.
 
-    ``str`` is encoded as UTF-8 with no newline translation. Missing folders are created.
+    ``str`` is encoded as UTF-8 with no newline translation. Missing folders are created. The
+    file is flushed to disk before it replaces the old one (single files are scenes and the
+    manifest, which nothing regenerates).
     """
     content = data.encode("utf-8") if isinstance(data, str) else data
-    return bool(write_files(plan_files([DesiredFile(Path(path), content)])))
+    return bool(write_files(plan_files([DesiredFile(Path(path), content)]), durable=True))

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TypeVar
 
 from unityscaffold.apply.rossharp import RESERVED_NAMES
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
@@ -54,7 +55,10 @@ class CodePlan:
     generation: GeneratedCode
 
 
-def _resolve(registry: Registry, item: Topic | Service, kind: type) -> MessageSpec | ServiceSpec:
+_Spec = TypeVar("_Spec", MessageSpec, ServiceSpec)
+
+
+def _resolve(registry: Registry, item: Topic | Service, kind: type[_Spec]) -> _Spec:
     where = item.locations.of("type")
     with located_at(where):
         found = registry.get(item.type)
@@ -155,7 +159,8 @@ def _check_class_names(manifest: Manifest, scripts: dict[str, ScriptInfo]) -> No
         for info in scripts.values()
         if not info.path.startswith(ours + "/")
     }
-    for item in (*manifest.topics, *manifest.services):
+    items: tuple[Topic | Service, ...] = (*manifest.topics, *manifest.services)
+    for item in items:
         clash = (
             "ROS#'s stock script"
             if item.class_name in RESERVED_NAMES
@@ -186,10 +191,11 @@ def plan_code(
     generation = _generate(manifest, registry, items)
     messages_dir = manifest.output_dir / "Messages"
     scripts_dir = manifest.output_dir / "Scripts"
-    generated, created_once = [], []
+    generated: list[DesiredFile] = []
+    created_once: list[DesiredFile] = []
     for file in output_files(generation, messages_dir):
         (created_once if file.create_only else generated).append(file)
-    scripts = []
+    planned: list[PlannedScript] = []
     for item, spec in items:
         view = _view(manifest, item, spec, generation)
         rendered = render_script(view)
@@ -209,7 +215,7 @@ def plan_code(
             ),
         ]
         kind = "topic" if isinstance(item, Topic) else "service"
-        scripts.append(PlannedScript(f"{kind} {item.name}", view, path, user_path, guid, item))
+        planned.append(PlannedScript(f"{kind} {item.name}", view, path, user_path, guid, item))
     # Every folder that will hold a planned file needs a folder .meta (the generator's own
     # covers Messages/ and below; these are the ones above it and Scripts/).
     folders = {
@@ -219,4 +225,4 @@ def plan_code(
         if messages_dir not in parent.parents and parent != messages_dir
     }
     created_once += _folder_metas(manifest, folders, salt)
-    return CodePlan(tuple(generated), tuple(created_once), tuple(scripts), generation)
+    return CodePlan(tuple(generated), tuple(created_once), tuple(planned), generation)

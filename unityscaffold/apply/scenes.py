@@ -17,8 +17,24 @@ from unityscaffold.apply.code import CodePlan
 from unityscaffold.apply.lock import LockComponent, LockFile
 from unityscaffold.apply.rossharp import STOCK_SCRIPTS, RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
-from unityscaffold.manifest.model import Component, Manifest, ObjectPath, StructValue
-from unityscaffold.unity import Enum, GameObjectNotFound, ObjectRef, SceneDocument, ScriptRef
+from unityscaffold.manifest.model import (
+    Component,
+    Connector,
+    Manifest,
+    ObjectPath,
+    Service,
+    StructValue,
+    Topic,
+)
+from unityscaffold.unity import (
+    Enum,
+    GameObject,
+    GameObjectNotFound,
+    ObjectRef,
+    SceneComponent,
+    SceneDocument,
+    ScriptRef,
+)
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
 from unityscaffold.unity.values import FieldValue
 
@@ -58,7 +74,7 @@ class _SceneEditor:
         self.owned = owned  # (GameObject path, script GUID) of components an earlier apply added
         self.wanted: set[tuple[str, str]] = set()
 
-    def gameobject(self, path: str, create: bool, where: SourceLocation):
+    def gameobject(self, path: str, create: bool, where: SourceLocation) -> GameObject:
         with located_at(where):
             try:
                 return self.doc.ensure_gameobject(path, create=create)
@@ -73,7 +89,7 @@ class _SceneEditor:
         fields: list[tuple[str, FieldValue]],
         where: SourceLocation,
         source: str,
-    ):
+    ) -> SceneComponent:
         go = self.gameobject(path, create, where)
         self.wanted.add((path, script.guid))
         existed = self.doc.find_component(go, script.guid, script.file_id) is not None
@@ -221,7 +237,10 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
                 f"note: {script.view.class_name}'s Connector stays empty (the "
                 "RosConnector is in another scene); it finds one at runtime"
             )
-        fields = [("Connector", ObjectRef(connector_id)), *script.view.serialized_fields()]
+        fields: list[tuple[str, FieldValue]] = [
+            ("Connector", ObjectRef(connector_id)),
+            *script.view.serialized_fields(),
+        ]
         ref = ScriptRef(
             script.guid, class_name=script.view.class_name, namespace=script.view.namespace
         )
@@ -233,25 +252,27 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             item.locations.of("gameobject"),
             script.source,
         )
-    for item in m.components:
-        if item.scene != plan.relative:
+    for entry in m.components:
+        if entry.scene != plan.relative:
             continue
-        ref = _component_script(ctx, item)
-        where = item.locations.of("gameobject")
+        ref = _component_script(ctx, entry)
+        where = entry.locations.of("gameobject")
         # Created before the fields are read, so they may refer to it.
-        editor.gameobject(item.gameobject, item.create, where)
-        if item.script in STOCK_SCRIPTS and connector_script is not None:
+        editor.gameobject(entry.gameobject, entry.create, where)
+        if entry.script in STOCK_SCRIPTS and connector_script is not None:
             # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
             editor.attach(
-                item.gameobject,
-                item.create,
+                entry.gameobject,
+                entry.create,
                 connector_script,
                 _connector_fields(m),
                 where,
-                f"connector for {item.script}",
+                f"connector for {entry.script}",
             )
-        fields = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in item.fields]
-        editor.attach(item.gameobject, item.create, ref, fields, where, f"component {item.script}")
+        values = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in entry.fields]
+        editor.attach(
+            entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
+        )
     editor.prune(lock.components, editor.wanted)
 
 
@@ -270,7 +291,13 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
     """Where each scene is named: the item's own ``scene`` key, else the top-level one."""
     found: dict[str, SourceLocation] = {}
-    for item in (manifest.connector, *manifest.topics, *manifest.services, *manifest.components):
+    items: tuple[Connector | Topic | Service | Component, ...] = (
+        manifest.connector,
+        *manifest.topics,
+        *manifest.services,
+        *manifest.components,
+    )
+    for item in items:
         own = item.locations.has("scene")
         where = item.locations.of("scene") if own else manifest.locations.of("scene")
         if own or item.scene not in found:

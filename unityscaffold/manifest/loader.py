@@ -184,7 +184,8 @@ def _namespace(r: Reader, top: YMap) -> str | None:
     keywords = [p for p in (value or "").split(".") if p and not is_csharp_identifier(p)]
     entry = top.get("namespace")
     if keywords and entry is not None:
-        r.invalid(entry, "a C# namespace such as MyRobot.Ros", hint=f"'{keywords[0]}' is a C# keyword")
+        hint = f"'{keywords[0]}' is a C# keyword"
+        r.invalid(entry, "a C# namespace such as MyRobot.Ros", hint=hint)
         return None
     return value
 

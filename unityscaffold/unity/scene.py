@@ -290,7 +290,7 @@ class SceneDocument:
                 "asset and cannot be addressed here",
                 hint="edit the prefab itself, or unpack the instance in Unity",
             )
-        pool = parents or [None]
+        pool: list[int | None] = [*parents] or [None]
         existing = sorted({n for p in pool for n in self.hierarchy.names_under(p)})
         where = f"under '{prefix}'" if prefix else "at the root"
         shown = ", ".join(repr(n) for n in existing[:30]) or "none"
