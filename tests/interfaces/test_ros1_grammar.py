@@ -134,3 +134,36 @@ def test_action_gives_genactions_seven_messages():
         "actionlib_msgs/GoalID",
         "pkg/FibGoal",
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (
+            "bool B=maybe\n",
+            "pkg/msg/Msg.msg:1:8: error: invalid bool constant value 'maybe': "
+            "not a Python literal such as True, False, 1 or 0 (expected a bool literal)",
+        ),
+        (
+            "bool B=1 +\n",
+            "pkg/msg/Msg.msg:1:8: error: invalid bool constant value '1 +': "
+            "not a Python literal such as True, False, 1 or 0 (expected a bool literal)",
+        ),
+        (
+            "float64 F=abc\n",
+            "pkg/msg/Msg.msg:1:11: error: invalid float64 constant value 'abc': "
+            "not a number (expected a float64 literal)",
+        ),
+        (
+            "int32 I=1.5\n",
+            "pkg/msg/Msg.msg:1:9: error: invalid int32 constant value '1.5': "
+            "not an integer (expected a int32 literal)",
+        ),
+    ],
+)
+def test_bad_constant_values_are_explained_without_python_internals(text, message):
+    """genmsg converts constants with Python; its error texts (``invalid literal for int()``,
+    ``<ast.Name object at 0x...>``) never reach the user."""
+    with pytest.raises(LocatedError) as caught:
+        parse(text)
+    assert caught.value.render().split("\n")[0] == message

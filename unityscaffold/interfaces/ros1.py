@@ -169,15 +169,26 @@ def _field(line: _Line, code: str, package: str, out: DiagnosticSink) -> Field |
 
 
 def _constant_value(type_name: str, text: str) -> Scalar:
-    """Convert a constant's text as genmsg does; raises ValueError with the reason."""
+    """Convert a constant's text as genmsg does; raises ValueError with the reason in the
+    user's words (Python's own, such as "invalid literal for int()", would mean nothing)."""
     if type_name in ("float32", "float64"):
-        return float(text)
+        try:
+            return float(text)
+        except ValueError:
+            raise ValueError("not a number") from None
     if type_name == "string":
         return text.strip()
     if type_name == "bool":
-        return bool(ast.literal_eval(text))
+        # genmsg evaluates the text as Python; a literal is what it can safely mean here.
+        try:
+            return bool(ast.literal_eval(text))
+        except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+            raise ValueError("not a Python literal such as True, False, 1 or 0") from None
     bits = _INT_BITS[type_name]
-    value = int(text)
+    try:
+        value = int(text)
+    except ValueError:
+        raise ValueError("not an integer") from None
     unsigned = type_name.startswith("u") or type_name == "char"
     low, high = (0, 2**bits - 1) if unsigned else (-(2 ** (bits - 1)), 2 ** (bits - 1) - 1)
     if not low <= value <= high:
@@ -219,7 +230,7 @@ def _constant(line: _Line, code: str, out: DiagnosticSink) -> Constant | None:
         return None
     try:
         value = _constant_value(type_name, value_text)
-    except (ValueError, SyntaxError) as exc:
+    except ValueError as exc:
         out.error(
             line.at(_column_of(raw, "=") + 1),
             f"invalid {type_name} constant value '{value_text.strip()}': {exc}",

@@ -21,6 +21,12 @@ __all__ = ["YEntry", "YMap", "YNode", "YScalar", "YSeq", "compose"]
 
 _CORE = "tag:yaml.org,2002:"
 _SCALAR_TAGS = {f"{_CORE}{t}" for t in ("str", "int", "float", "bool", "null", "timestamp")}
+# What an explicitly tagged scalar must look like, for the tags whose values can be wrong.
+_TAGGED_FORMS = {
+    "int": "an integer such as 10 or 0x1F",
+    "float": "a number such as 1.5",
+    "bool": "true or false",
+}
 # Tens of thousands of nodes is far beyond any real manifest; the cap stops alias bombs.
 _MAX_NODES = 50_000
 
@@ -192,8 +198,14 @@ class _Converter:
             return YScalar(str(node.value), self.loc(node))
         try:
             value = self._yaml.constructor.construct_object(node, deep=True)
-        except (YAMLError, ValueError, TypeError) as exc:
-            raise self.fail(node, f"invalid {tag.removeprefix(_CORE)} value: {exc}") from None
+        except (YAMLError, ValueError, TypeError, KeyError):
+            kind = tag.removeprefix(_CORE)
+            form = _TAGGED_FORMS.get(kind)
+            raise self.fail(
+                node,
+                f"invalid {kind} value {node.value!r}",
+                hint=f"a !!{kind} value is {form}" if form else None,
+            ) from None
         return YScalar(value, self.loc(node))
 
     def entries(self, node: MappingNode) -> tuple[YEntry, ...]:

@@ -268,8 +268,10 @@ def read_manifest(path: Path) -> str:
         raise UserError(
             f"manifest not found: {path}", hint="create one with `scaffold init`, or use --print"
         ) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise UserError(f"cannot read manifest {path}: {exc}") from None
+    except OSError as exc:
+        raise UserError(f"cannot read manifest {path}: {exc.strerror or exc}") from None
+    except UnicodeDecodeError:
+        raise UserError(f"the manifest {path} is not UTF-8 text", hint="save it as UTF-8") from None
 
 
 def interface_folders(text: str, base: Path) -> list[Path]:

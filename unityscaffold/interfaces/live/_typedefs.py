@@ -43,6 +43,10 @@ def _text(typedef: Mapping[str, Any]) -> str:
     names = _strings(typedef, "fieldnames")
     types = _strings(typedef, "fieldtypes")
     lengths = typedef.get("fieldarraylen", [-1] * len(names))
+    if not isinstance(lengths, list) or not all(
+        isinstance(n, int) and not isinstance(n, bool) for n in lengths
+    ):
+        raise ValueError("TypeDef field fieldarraylen is not a list of integers")
     if not (len(names) == len(types) == len(lengths)):
         raise ValueError(f"TypeDef of {typedef.get('type')} has lists of different lengths")
     if _strings(typedef, "constnames"):
@@ -51,7 +55,7 @@ def _text(typedef: Mapping[str, Any]) -> str:
             "rosapi does not report the types of its constants",
             hint="add the package that defines it to the manifest's interfaces",
         )
-    return "".join(_field_line(t, n, int(a)) for t, n, a in zip(types, names, lengths, strict=True))
+    return "".join(_field_line(t, n, a) for t, n, a in zip(types, names, lengths, strict=True))
 
 
 def _strings(typedef: Mapping[str, Any], key: str) -> list[str]:

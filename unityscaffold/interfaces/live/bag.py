@@ -45,9 +45,14 @@ def _connections(path: Path) -> tuple[Dialect, list[Connection]]:
             return dialect, list(reader.connections)
     except (ReaderError1, ReaderError2) as exc:
         raise UserError(f"cannot read bag {path}: {exc}") from None
-    except (OSError, ValueError, KeyError, IndexError) as exc:
-        # rosbags lets some corruptions through as plain Python errors.
-        raise UserError(f"cannot read bag {path}: corrupt or truncated ({exc})") from None
+    except OSError as exc:
+        raise UserError(
+            f"cannot read bag {path}: {exc.strerror or 'corrupt or truncated'}"
+        ) from None
+    except (ValueError, KeyError, IndexError):
+        # rosbags lets some corruptions through as plain Python errors, whose text means
+        # nothing to the user.
+        raise UserError(f"cannot read bag {path}: corrupt or truncated") from None
     except Exception as exc:
         # The storage plugins (sqlite3, mcap) raise their own error families.
         if type(exc).__module__.startswith(("sqlite3", "rosbags")):

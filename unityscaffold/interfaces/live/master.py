@@ -16,6 +16,7 @@ import xmlrpc.client
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 from typing import Any
+from xml.parsers.expat import ExpatError
 
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.live import tcpros
@@ -26,6 +27,7 @@ from unityscaffold.interfaces.live.model import (
     Discovery,
     NameFilter,
     Progress,
+    is_url,
 )
 from unityscaffold.interfaces.model import Dialect
 
@@ -76,33 +78,48 @@ class _Api:
             ) from None
         except socket.gaierror as exc:
             raise UserError(f"no {self.who} at {self.url} (unknown host: {exc.strerror})") from None
-        except (xmlrpc.client.Error, http.client.HTTPException, ValueError) as exc:
-            raise UserError(f"{self.who} at {self.url} is not a ROS XML-RPC API: {exc}") from None
+        except xmlrpc.client.ProtocolError as exc:
+            raise self._not_ros(f"it answered HTTP {exc.errcode} {exc.errmsg}") from None
+        except xmlrpc.client.Fault as exc:
+            raise self._not_ros(f"it answered fault {exc.faultCode}: {exc.faultString}") from None
+        except (xmlrpc.client.Error, ExpatError, http.client.HTTPException, ValueError):
+            raise self._not_ros("its reply is not XML-RPC") from None
         except OSError as exc:
             raise UserError(f"no {self.who} at {self.url} ({exc.strerror or exc})") from None
         if not (isinstance(reply, list) and len(reply) == 3 and isinstance(reply[0], int)):
-            raise UserError(f"{self.who} at {self.url} sent a malformed reply to {method}")
+            raise self.malformed(method)
         code, status, value = reply
         if code != 1:
             raise UserError(f"{self.who} at {self.url} refused {method}: {status}")
         return value
 
+    def _not_ros(self, reason: str) -> UserError:
+        return UserError(f"{self.who} at {self.url} is not a ROS XML-RPC API: {reason}")
+
+    def malformed(self, method: str) -> UserError:
+        return UserError(f"{self.who} at {self.url} sent a malformed reply to {method}")
+
 
 def check_url(url: str) -> None:
-    parsed = urllib.parse.urlsplit(url)
-    if parsed.scheme != "http" or not parsed.hostname:
+    if not is_url(url, ("http",)):
         raise UserError(f"not a ROS master URL: {url!r}", hint="use http://HOST:11311")
 
 
 def _graph(master: _Api) -> _Graph:
-    types = {name: kind for name, kind in master.call("getTopicTypes")}
-    publishers, subscribers, services = master.call("getSystemState")
-    return _Graph(
-        types,
-        dict(map(tuple, publishers)),
-        dict(map(tuple, subscribers)),
-        dict(map(tuple, services)),
-    )
+    try:
+        types = {name: kind for name, kind in master.call("getTopicTypes")}
+    except (TypeError, ValueError):
+        raise master.malformed("getTopicTypes") from None
+    try:
+        publishers, subscribers, services = master.call("getSystemState")
+        return _Graph(
+            types,
+            dict(map(tuple, publishers)),
+            dict(map(tuple, subscribers)),
+            dict(map(tuple, services)),
+        )
+    except (TypeError, ValueError):
+        raise master.malformed("getSystemState") from None
 
 
 def list_master_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
@@ -201,8 +218,9 @@ def _service_job(master: _Api, service: str) -> Any:
     def probe() -> tuple[DiscoveredService | None, str | None]:
         try:
             uri = master.call("lookupService", service)
-            parsed = urllib.parse.urlsplit(uri)
-            if parsed.scheme != "rosrpc" or not parsed.hostname or not parsed.port:
+            valid = isinstance(uri, str) and is_url(uri, ("rosrpc",))
+            parsed = urllib.parse.urlsplit(uri if valid else "")
+            if not parsed.hostname or not parsed.port:
                 raise UserError(f"the master gave {service} the address {uri!r}, not rosrpc://")
             header = tcpros.exchange(
                 parsed.hostname,

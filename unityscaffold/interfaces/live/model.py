@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import enum
 import re
+import urllib.parse
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -23,6 +24,7 @@ __all__ = [
     "Discovery",
     "NameFilter",
     "Progress",
+    "is_url",
 ]
 
 # Called as ``progress(done, total, name)`` while probing; library code never prints.
@@ -34,6 +36,16 @@ _SYSTEM_NAMES = re.compile(
     r"|/(get_loggers|set_logger_level|describe_parameters|get_parameters|get_parameter_types"
     r"|list_parameters|set_parameters|set_parameters_atomically|get_type_description)$"
 )
+
+
+def is_url(url: str, schemes: tuple[str, ...]) -> bool:
+    """Whether ``url`` has one of ``schemes``, a host, and no port or one in 0..65535."""
+    try:
+        parsed = urllib.parse.urlsplit(url)
+        port = parsed.port  # raises ValueError for one that is not a number in 0..65535
+    except ValueError:
+        return False
+    return parsed.scheme in schemes and bool(parsed.hostname) and (port is None or port >= 0)
 
 
 class Direction(enum.Enum):

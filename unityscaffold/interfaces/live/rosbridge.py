@@ -14,7 +14,6 @@ import contextlib
 import itertools
 import json
 import time
-import urllib.parse
 from types import TracebackType
 from typing import Any
 
@@ -30,6 +29,7 @@ from unityscaffold.interfaces.live.model import (
     Discovery,
     NameFilter,
     Progress,
+    is_url,
 )
 from unityscaffold.interfaces.model import Dialect
 
@@ -40,8 +40,7 @@ class RosbridgeClient:
     """A rosbridge v2 connection that calls services and waits for their answers."""
 
     def __init__(self, url: str, *, timeout: float) -> None:
-        parsed = urllib.parse.urlsplit(url)
-        if parsed.scheme not in ("ws", "wss") or not parsed.hostname:
+        if not is_url(url, ("ws", "wss")):
             raise UserError(f"not a rosbridge URL: {url!r}", hint="use ws://HOST:9090")
         self.url, self.timeout = url, timeout
         self._ids = itertools.count(1)

@@ -53,8 +53,8 @@ def decode_header(body: bytes) -> dict[str, str]:
             raise MalformedHeader(f"field {item[:40]!r} has no '='")
         try:
             fields[key.decode()] = value.decode()
-        except UnicodeDecodeError as exc:
-            raise MalformedHeader(f"field is not UTF-8: {exc}") from None
+        except UnicodeDecodeError:
+            raise MalformedHeader(f"field {item[:40]!r} is not UTF-8 text") from None
     return fields
 
 
