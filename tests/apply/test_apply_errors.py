@@ -144,3 +144,15 @@ def test_binary_project_settings_are_refused(sample):
     settings = sample / "unity" / "ProjectSettings" / "ProjectSettings.asset"
     settings.write_bytes(b"\x00\x01binary settings\xff")
     _apply_fails(sample, "ProjectSettings.asset is not a text (YAML) settings file", "Force Text")
+
+
+def test_a_project_folder_without_assets_points_at_the_project_key(sample):
+    _edit(sample, "project: unity ", "project: ros_ws")
+    manifest = sample / "robot.yaml"
+    line = next(n for n in manifest.read_text().split("\n") if n.startswith("project:"))
+    assert _apply_fails(sample) == (
+        f"{manifest}:6:10: error: {sample / 'ros_ws'} is not a Unity project (no Assets/ folder)\n"
+        f"    {line}\n"
+        f"             ^\n"
+        "  hint: set `project:` in the manifest, or create one with scaffold init\n"
+    )

@@ -16,7 +16,7 @@ from unityscaffold.apply.rossharp import RosSharp
 from unityscaffold.apply.scenes import ScenePlan, plan_scenes
 from unityscaffold.apply.settings import with_ros_define
 from unityscaffold.apply.userfiles import plan_user_files
-from unityscaffold.errors import UserError
+from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
@@ -112,7 +112,8 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
     """Compute everything ``apply`` would do; raises ``UserError`` for bad input."""
     project = manifest.project_root
     if not (project / "Assets").is_dir():
-        raise UserError(
+        raise LocatedError.at(
+            manifest.locations.of("project"),
             f"{project} is not a Unity project (no Assets/ folder)",
             hint="set `project:` in the manifest, or create one with scaffold init",
         )
