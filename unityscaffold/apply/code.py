@@ -52,7 +52,7 @@ class CodePlan:
     generated: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
     created_once: tuple[DesiredFile, ...]  # user halves and .meta files: written only if missing
     scripts: tuple[PlannedScript, ...]
-    generation: GeneratedCode
+    messages: GeneratedCode  # the message, service and action classes (under Messages/)
 
 
 _Spec = TypeVar("_Spec", MessageSpec, ServiceSpec)
@@ -108,7 +108,7 @@ def _view(
     manifest: Manifest,
     item: Topic | Service,
     spec: MessageSpec | ServiceSpec,
-    generation: GeneratedCode,
+    messages: GeneratedCode,
 ) -> Script:
     common = {
         "class_name": item.class_name,
@@ -116,7 +116,7 @@ def _view(
         "manifest": manifest.path.name,
     }
     if isinstance(item, Topic):
-        message = generation.message_class(spec.full_name).qualified
+        message = messages.message_class(spec.full_name).qualified
         if item.direction is Direction.PUBLISH:
             return PublisherScript(
                 **common, topic=item.name, message_type=message, rate=item.rate or 0.0
@@ -128,7 +128,7 @@ def _view(
             throttle=item.throttle or 0,
             queue=item.queue or 1,
         )
-    classes = generation.classes[f"{spec.package}/srv/{spec.name}"]
+    classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
     kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
     return kind(
         **common,
@@ -188,16 +188,16 @@ def plan_code(
     items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
-    generation = _generate(manifest, registry, items)
+    messages = _generate(manifest, registry, items)
     messages_dir = manifest.output_dir / "Messages"
     scripts_dir = manifest.output_dir / "Scripts"
     generated: list[DesiredFile] = []
     created_once: list[DesiredFile] = []
-    for file in output_files(generation, messages_dir):
+    for file in output_files(messages, messages_dir):
         (created_once if file.create_only else generated).append(file)
     planned: list[PlannedScript] = []
     for item, spec in items:
-        view = _view(manifest, item, spec, generation)
+        view = _view(manifest, item, spec, messages)
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
         guid = meta_guid(path.with_name(path.name + ".meta"), salt, manifest.asset_path(path))
@@ -225,4 +225,4 @@ def plan_code(
         if messages_dir not in parent.parents and parent != messages_dir
     }
     created_once += _folder_metas(manifest, folders, salt)
-    return CodePlan(tuple(generated), tuple(created_once), tuple(planned), generation)
+    return CodePlan(tuple(generated), tuple(created_once), tuple(planned), messages)

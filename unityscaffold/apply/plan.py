@@ -152,5 +152,5 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
         scenes,
         conflicts,
         notes,
-        skipped_types=len(code.generation.skipped),
+        skipped_types=len(code.messages.skipped),
     )
