@@ -26,7 +26,7 @@ TARGET = ROOT / "unityscaffold" / "codegen" / "_shipped_data.py"
 ENV_VAR = "UNITYSCAFFOLD_ROSSHARP"
 MESSAGE_TYPES = Path("Runtime/Libraries/RosBridgeClient/MessageTypes")
 NAMESPACE_ROOT = "RosSharp.RosBridgeClient.MessageTypes"
-DEFAULT_TAG = "2.2.1"  # the ROS# release `scaffold init` pins (apply/rossharp.py DEFAULT_VERSION)
+DEFAULT_TAG = "2.2.1"  # the ROS# release `scaffold init` pins (apply/_rossharp.py DEFAULT_VERSION)
 WIDTH = 99  # entries are packed onto lines up to this many characters
 
 _NAMESPACE_RE = re.compile(rf"^namespace {re.escape(NAMESPACE_ROOT)}\.(\w+)\s*$", re.M)

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from helpers import run_cli, snapshot
 
-from unityscaffold.apply.lock import LockComponent, LockFile, lock_path
+from unityscaffold.apply._lock import LockComponent, LockFile, lock_path
 from unityscaffold.errors import UserError
 
 

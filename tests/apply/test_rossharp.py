@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from helpers import build_tree
 
-from unityscaffold.apply.rossharp import RosSharp, pinned_version
+from unityscaffold.apply._rossharp import RosSharp, pinned_version
 from unityscaffold.errors import UserError
 from unityscaffold.unity.project import script_index
 

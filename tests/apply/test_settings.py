@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from unityscaffold.apply.settings import with_ros_define
+from unityscaffold.apply._settings import with_ros_define
 
 EMPTY = "PlayerSettings:\n  productName: x\n  scriptingDefineSymbols: {}\n  other: 1\n"
 GROUPS = (

@@ -14,8 +14,8 @@ from helpers_live import run_cli, snapshot
 
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.live import discover
+from unityscaffold.interfaces.live._tcpros import MalformedHeader, decode_header
 from unityscaffold.interfaces.live._typedefs import full_text_from_typedefs
-from unityscaffold.interfaces.live.tcpros import MalformedHeader, decode_header
 
 FAULT = (
     b"<?xml version='1.0'?><methodResponse><fault><value><struct>"

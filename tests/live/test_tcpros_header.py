@@ -12,7 +12,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from unityscaffold.errors import UserError
-from unityscaffold.interfaces.live.tcpros import (
+from unityscaffold.interfaces.live._tcpros import (
     MalformedHeader,
     decode_header,
     encode_header,

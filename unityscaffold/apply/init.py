@@ -11,7 +11,7 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
-from unityscaffold.apply.rossharp import DEFAULT_VERSION
+from unityscaffold.apply._rossharp import DEFAULT_VERSION
 from unityscaffold.errors import UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.manifest import starter_manifest

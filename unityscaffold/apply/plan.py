@@ -9,13 +9,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply.code import CodePlan, plan_code
-from unityscaffold.apply.lock import LockFile, lock_path, sha256
-from unityscaffold.apply.prune import plan_pruning
-from unityscaffold.apply.rossharp import RosSharp
-from unityscaffold.apply.scenes import ScenePlan, plan_scenes
-from unityscaffold.apply.settings import with_ros_define
-from unityscaffold.apply.userfiles import plan_user_files
+from unityscaffold.apply._code import CodePlan, plan_code
+from unityscaffold.apply._lock import LockFile, lock_path, sha256
+from unityscaffold.apply._prune import plan_pruning
+from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.apply._scenes import ScenePlan, plan_scenes
+from unityscaffold.apply._settings import with_ros_define
+from unityscaffold.apply._userfiles import plan_user_files
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files
 from unityscaffold.interfaces.model import Dialect

@@ -6,7 +6,7 @@ import enum
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply.lock import lock_path
+from unityscaffold.apply._lock import lock_path
 from unityscaffold.apply.plan import Plan, make_plan
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.fileout import write_files

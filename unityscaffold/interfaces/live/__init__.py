@@ -36,12 +36,12 @@ __all__ = [
 def list_live_types(url: str, *, timeout: float) -> list[tuple[str, str]]:
     """``(topic, type)`` of the active topics: ``http://`` is a ROS 1 master, ``ws://`` or
     ``wss://`` a rosbridge."""
-    from unityscaffold.interfaces.live import master, rosbridge
+    from unityscaffold.interfaces.live import _master, _rosbridge
 
     if url.startswith("http://"):
-        return master.list_master_types(url, timeout=timeout)
+        return _master.list_master_types(url, timeout=timeout)
     if url.startswith(("ws://", "wss://")):
-        return rosbridge.list_rosbridge_types(url, timeout=timeout)
+        return _rosbridge.list_rosbridge_types(url, timeout=timeout)
     raise UserError(
         f"not a live ROS URL: {url!r}",
         hint="use http://HOST:11311 (ROS 1 master) or ws://HOST:9090 (rosbridge)",
@@ -59,18 +59,17 @@ def discover(
     progress: Progress | None = None,
 ) -> Discovery:
     """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``."""
-    from unityscaffold.interfaces.live import bag as bags
-    from unityscaffold.interfaces.live import master, rosbridge
+    from unityscaffold.interfaces.live import _bag, _master, _rosbridge
 
     chosen = [s for s in (master_url, rosbridge_url, bag) if s is not None]
     if len(chosen) != 1:
         raise UserError("give exactly one of --master, --rosbridge and --bag")
     names = names or NameFilter()
     if master_url is not None:
-        return master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
+        return _master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
     if rosbridge_url is not None:
-        return rosbridge.discover_rosbridge(
+        return _rosbridge.discover_rosbridge(
             rosbridge_url, timeout=timeout, names=names, dialect=dialect, progress=progress
         )
     assert bag is not None
-    return bags.discover_bag(Path(bag), names=names)
+    return _bag.discover_bag(Path(bag), names=names)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TypeVar
 
-from unityscaffold.apply.rossharp import RESERVED_NAMES
+from unityscaffold.apply._rossharp import RESERVED_NAMES
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.naming import ClassClash

@@ -19,7 +19,7 @@ from typing import Any
 from xml.parsers.expat import ExpatError
 
 from unityscaffold.errors import UserError
-from unityscaffold.interfaces.live import tcpros
+from unityscaffold.interfaces.live import _tcpros
 from unityscaffold.interfaces.live.model import (
     Direction,
     DiscoveredService,
@@ -205,7 +205,7 @@ def _probe_publisher(master: _Api, node: str, topic: str) -> dict[str, str]:
     if not (isinstance(protocol, list) and len(protocol) == 3 and protocol[0] == "TCPROS"):
         raise UserError(f"node {node} offered no TCPROS connection for {topic}")
     _, host, port = protocol
-    return tcpros.exchange(
+    return _tcpros.exchange(
         host,
         int(port),
         {"callerid": CALLER_ID, "topic": topic, "md5sum": "*", "type": "*"},
@@ -222,7 +222,7 @@ def _service_job(master: _Api, service: str) -> Any:
             parsed = urllib.parse.urlsplit(uri if valid else "")
             if not parsed.hostname or not parsed.port:
                 raise UserError(f"the master gave {service} the address {uri!r}, not rosrpc://")
-            header = tcpros.exchange(
+            header = _tcpros.exchange(
                 parsed.hostname,
                 parsed.port,
                 {"callerid": CALLER_ID, "service": service, "md5sum": "*", "probe": "1"},

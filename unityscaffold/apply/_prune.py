@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply.lock import LockFile, sha256
+from unityscaffold.apply._lock import LockFile, sha256
 from unityscaffold.manifest.model import Manifest
 
 __all__ = ["Pruning", "plan_pruning"]

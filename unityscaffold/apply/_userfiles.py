@@ -11,8 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply.code import CodePlan
-from unityscaffold.apply.lock import LockFile, sha256
+from unityscaffold.apply._code import CodePlan
+from unityscaffold.apply._lock import LockFile, sha256
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.manifest.model import Manifest
 

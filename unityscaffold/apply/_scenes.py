@@ -13,9 +13,9 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply.code import CodePlan
-from unityscaffold.apply.lock import LockComponent, LockFile
-from unityscaffold.apply.rossharp import STOCK_SCRIPTS, RosSharp
+from unityscaffold.apply._code import CodePlan
+from unityscaffold.apply._lock import LockComponent, LockFile
+from unityscaffold.apply._rossharp import STOCK_SCRIPTS, RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import (
     Component,
