@@ -147,7 +147,7 @@ def test_a_component_the_user_attached_is_adopted_but_never_pruned(sample):
     scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
     # Pretend the user made the connector: drop it from the lock (apply then sees it as theirs).
     lock = json.loads((sample / "robot.lock.json").read_text())
-    lock["components"] = [c for c in lock["components"] if c["source"] != "connector"]
+    lock["components"] = [c for c in lock["components"] if c["entry"] != "connector"]
     (sample / "robot.lock.json").write_text(json.dumps(lock, indent=2) + "\n")
     assert run_cli("apply", str(manifest)).code == 0
     manifest.write_text(

@@ -101,8 +101,8 @@ def _components(*items: str) -> str:
             "components[0].script should be a string, found nothing",
         ),
         (
-            _lock(_components("{" + _SCENE + ', "source": null}')),
-            "components[0].source should be a string, found null",
+            _lock(_components("{" + _SCENE + ', "entry": null}')),
+            "components[0].entry should be a string, found null",
         ),
     ],
 )

@@ -39,7 +39,7 @@ Script = PublisherScript | SubscriberScript | ServiceClientScript | ServiceServe
 class PlannedScript:
     """One generated MonoBehaviour and where the manifest wants it attached."""
 
-    source: str  # "topic /odom", "service /reset"
+    entry: str  # the manifest entry it serves: "topic /odom", "service /reset"
     view: Script
     path: Path
     user_path: Path

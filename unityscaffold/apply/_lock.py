@@ -36,7 +36,7 @@ class LockComponent:
     scene: str
     gameobject: str
     script: str
-    source: str = ""  # what in the manifest asked for it, e.g. "topic /odom"
+    entry: str = ""  # the manifest entry that asked for it, e.g. "topic /odom"
 
 
 class _Malformed(Exception):
@@ -115,10 +115,10 @@ def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
             _string(item.get(key, _MISSING), f"{where}.{key}")
             for key in ("scene", "gameobject", "script")
         )
-        source = _string(item.get("source", ""), f"{where}.source")
+        entry_name = _string(item.get("entry", ""), f"{where}.entry")
         if not _inside_assets(scene):
             raise _wrong(f"{where}.scene", _INSIDE_ASSETS, scene)
-        found.append(LockComponent(scene, gameobject, script, source))
+        found.append(LockComponent(scene, gameobject, script, entry_name))
     return tuple(found)
 
 
@@ -175,7 +175,7 @@ class LockFile:
                     "scene": c.scene,
                     "gameobject": c.gameobject,
                     "script": c.script,
-                    "source": c.source,
+                    "entry": c.entry,
                 }
                 for c in sorted(set(self.components))
             ],

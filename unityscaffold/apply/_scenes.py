@@ -88,7 +88,7 @@ class _SceneEditor:
         script: ScriptRef,
         fields: list[tuple[str, FieldValue]],
         where: SourceLocation,
-        source: str,
+        entry: str,
     ) -> SceneComponent:
         go = self.gameobject(path, create, where)
         self.wanted.add((path, script.guid))
@@ -104,9 +104,7 @@ class _SceneEditor:
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
         if not existed or (path, script.guid) in self.owned:
-            self.plan.components.append(
-                LockComponent(self.plan.relative, path, script.guid, source)
-            )
+            self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, entry))
         return component
 
     def prune(self, previous: Iterable[LockComponent], keep: set[tuple[str, str]]) -> None:
@@ -119,7 +117,7 @@ class _SceneEditor:
                 continue  # the GameObject is gone already: nothing to remove
             component = self.doc.find_component(go, old.script)
             if component is not None and self.doc.remove_component(component):
-                self.plan.actions.append(f"remove {old.source or old.script} from {old.gameobject}")
+                self.plan.actions.append(f"remove {old.entry or old.script} from {old.gameobject}")
 
 
 def _connector_fields(manifest: Manifest) -> list[tuple[str, FieldValue]]:
@@ -250,7 +248,7 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             ref,
             fields,
             item.locations.of("gameobject"),
-            script.source,
+            script.entry,
         )
     for entry in m.components:
         if entry.scene != plan.relative:

@@ -59,6 +59,6 @@ def plan_user_files(manifest: Manifest, code: CodePlan, lock: LockFile) -> UserF
             if recorded != sha256(fresh) and _regenerates(script.path, code):
                 result.notes.append(
                     f"{relative} was written for an earlier version of {script.view.class_name} "
-                    f"({script.source}); check that its methods still match {script.path.name}"
+                    f"({script.entry}); check that its methods still match {script.path.name}"
                 )
     return result

@@ -188,7 +188,7 @@ def _report(
     verb = "would add" if dry_run else "added"
     typer.echo(
         f"found {len(found.topics)} topics and {len(found.services)} services in "
-        f"{found.source}; {verb} {len(changes.added_topics)} topics and "
+        f"{found.origin}; {verb} {len(changes.added_topics)} topics and "
         f"{len(changes.added_services)} services to {manifest}"
     )
     if changes.already_listed:

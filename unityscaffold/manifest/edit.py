@@ -118,7 +118,7 @@ def _check_dialect(document: CommentedMap, discovery: Discovery, path: str) -> N
         line, col = document.lc.value("ros")
         raise LocatedError.at(
             SourceLocation(path, line + 1, col + 1),
-            f"the manifest is for ROS {ros}, but {discovery.source} is a "
+            f"the manifest is for ROS {ros}, but {discovery.origin} is a "
             f"{discovery.dialect.label} system",
             hint="discover into a manifest for the same ROS",
         )
@@ -256,7 +256,7 @@ def edit_manifest(
 
 def manifest_fragment(discovery: Discovery, *, cache_entry: str) -> str:
     """The ``interfaces``, ``topics`` and ``services`` entries to paste into a manifest."""
-    fragment = f"# discovered from {discovery.source}\nros: {int(discovery.dialect)}\n"
+    fragment = f"# discovered from {discovery.origin}\nros: {int(discovery.dialect)}\n"
     edit = edit_manifest(fragment, discovery, cache_entry=cache_entry, path="<fragment>")
     return edit.text
 

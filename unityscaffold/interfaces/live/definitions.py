@@ -162,7 +162,7 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
     for item in items:
         reconstructed = bool(item.definition)
         registry = own if reconstructed else wider
-        spec = _lookup(registry, item.type, discovery.source)
+        spec = _lookup(registry, item.type, discovery.origin)
         if spec is None:
             warnings.append(
                 f"no definition of {item.type} (used by {item.name}): add the folder "
@@ -171,18 +171,18 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
             continue
         if discovery.dialect is Dialect.ROS1 and item.md5:
             _check_md5(
-                registry, spec, item.md5, item.name, discovery.source, reconstructed=reconstructed
+                registry, spec, item.md5, item.name, discovery.origin, reconstructed=reconstructed
             )
     return warnings
 
 
-def _lookup(registry: Registry, type_name: str, source: str) -> MessageSpec | ServiceSpec | None:
+def _lookup(registry: Registry, type_name: str, origin: str) -> MessageSpec | ServiceSpec | None:
     try:
         found = registry.find(type_name)
     except LocatedError as error:
         first = error.diagnostics[0]
         raise UserError(
-            f"the definition of {type_name} reported by {source} does not parse: "
+            f"the definition of {type_name} reported by {origin} does not parse: "
             f"line {first.location.line}: {first.message}"
         ) from None
     return found if isinstance(found, MessageSpec | ServiceSpec) else None
@@ -193,7 +193,7 @@ def _check_md5(
     spec: MessageSpec | ServiceSpec,
     reported: str,
     name: str,
-    source: str,
+    origin: str,
     *,
     reconstructed: bool,
 ) -> None:
@@ -207,7 +207,7 @@ def _check_md5(
         return
     if reconstructed:
         hint = (
-            f"the definition {source} sent for {spec.full_name} does not match its own "
+            f"the definition {origin} sent for {spec.full_name} does not match its own "
             "md5sum; the publisher may have been built from other .msg files than it runs"
         )
     else:
@@ -216,7 +216,7 @@ def _check_md5(
             f"{spec.source or 'the local definition'}"
         )
     raise UserError(
-        f"md5sum mismatch for {spec.full_name} (used by {name}): {source} reported "
+        f"md5sum mismatch for {spec.full_name} (used by {name}): {origin} reported "
         f"{reported}, the definition gives {computed}",
         hint=hint,
     )

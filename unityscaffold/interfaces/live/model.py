@@ -107,7 +107,7 @@ class Discovery:
     """Everything one source reported, sorted by name."""
 
     dialect: Dialect
-    source: str
+    origin: str  # the master or rosbridge URL, or the bag file
     topics: tuple[DiscoveredTopic, ...] = ()
     services: tuple[DiscoveredService, ...] = ()
     warnings: tuple[str, ...] = ()
@@ -119,7 +119,7 @@ class Discovery:
     def to_json(self) -> dict[str, Any]:
         return {
             "ros": int(self.dialect),
-            "source": self.source,
+            "source": self.origin,
             "topics": [t.to_json() for t in self.topics],
             "services": [s.to_json() for s in self.services],
             "warnings": list(self.warnings),
