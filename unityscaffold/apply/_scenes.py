@@ -51,7 +51,7 @@ class ScenePlan:
     relative: str
     before: str
     after: str
-    actions: list[str] = field(default_factory=list)
+    edits: list[str] = field(default_factory=list)  # one line per change, for the summary
     components: list[LockComponent] = field(default_factory=list)
 
     @property
@@ -98,9 +98,9 @@ class _SceneEditor:
             component = self.doc.ensure_component(go, script, fields)
         name = script.class_name or script.guid
         if not existed:
-            self.plan.actions.append(f"add {name} to {path}")
+            self.plan.edits.append(f"add {name} to {path}")
         elif self.doc.text() != before:
-            self.plan.actions.append(f"update {name} on {path}")
+            self.plan.edits.append(f"update {name} on {path}")
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
         if not existed or (path, script.guid) in self.owned:
@@ -117,7 +117,7 @@ class _SceneEditor:
                 continue  # the GameObject is gone already: nothing to remove
             component = self.doc.find_component(go, old.script)
             if component is not None and self.doc.remove_component(component):
-                self.plan.actions.append(f"remove {old.entry or old.script} from {old.gameobject}")
+                self.plan.edits.append(f"remove {old.entry or old.script} from {old.gameobject}")
 
 
 def _connector_fields(manifest: Manifest) -> list[tuple[str, FieldValue]]:
@@ -231,7 +231,7 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
         if item.scene != plan.relative:
             continue
         if connector_id == 0:
-            plan.actions.append(
+            plan.edits.append(
                 f"note: {script.view.class_name}'s Connector stays empty (the "
                 "RosConnector is in another scene); it finds one at runtime"
             )

@@ -28,9 +28,9 @@ def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
                 lines.append(f"  {change.kind.value:<7} {plan.relative(change.path)}")
         lines += [f"  remove  {plan.relative(path)}" for path in plan.deletions]
     for scene in plan.scenes:
-        if scene.actions:
+        if scene.edits:
             lines.append(f"scene {scene.relative}:")
-            lines += [f"  {action}" for action in scene.actions]
+            lines += [f"  {edit}" for edit in scene.edits]
     lines += [f"note: {note}" for note in plan.notes]
     lines += [
         f"edited by hand (apply will stop; apply --force overwrites): {c}" for c in plan.conflicts
@@ -70,7 +70,7 @@ def plan_json(plan: Plan) -> dict[str, Any]:
             if c.writes
         ],
         "removed": [plan.relative(p) for p in plan.deletions],
-        "scenes": [{"path": s.relative, "actions": s.actions} for s in plan.scenes if s.actions],
+        "scenes": [{"path": s.relative, "actions": s.edits} for s in plan.scenes if s.edits],
         "conflicts": plan.conflicts,
         "notes": plan.notes,
     }
