@@ -162,3 +162,16 @@ def test_write_if_changed_refuses_a_folder_in_the_way(tmp_path: Path) -> None:
     (tmp_path / "Scene.unity").mkdir()
     with pytest.raises(UserError, match="a folder of that name exists"):
         write_if_changed(tmp_path / "Scene.unity", "x")
+
+
+def test_a_file_differing_only_in_crlf_line_endings_is_unchanged_and_kept(tmp_path: Path) -> None:
+    path = tmp_path / "A.cs"
+    path.write_bytes(b"class A\r\n{\r\n}\r\n")
+    [same] = plan_files([DesiredFile(path, b"class A\n{\n}\n")])
+    assert same.kind is ChangeKind.UNCHANGED
+    [changed] = plan_files([DesiredFile(path, b"class B\n{\n}\n")])
+    assert changed.kind is ChangeKind.UPDATE
+    write_files([changed])
+    assert path.read_bytes() == b"class B\n{\n}\n"  # written with LF
+    assert fileout.same_text(b"a\r\nb", b"a\nb")
+    assert not fileout.same_text(b"a\rb", b"a\nb")

@@ -11,6 +11,11 @@ no half-written file, no temporary file and no new folder behind. ``write_if_cha
 same path for a single file. A file whose bytes are unchanged is never rewritten, an existing
 file keeps its permission bits, and a new one gets the mode the umask allows.
 
+Files are written with LF line endings, but a file that differs from the desired one only in
+CRLF line endings counts as unchanged (``same_text``): Git for Windows checks text out with
+CRLF (``core.autocrlf=true``) unless ``.gitattributes`` says otherwise, and such a checkout is
+not drift.
+
 This module sits at the bottom of the layers (see ``tests/test_layers.py``): it imports only
 ``unityscaffold.errors``, so every other package may use it.
 """
@@ -32,6 +37,7 @@ __all__ = [
     "DesiredFile",
     "FileChange",
     "plan_files",
+    "same_text",
     "write_files",
     "write_if_changed",
 ]
@@ -72,6 +78,11 @@ class FileChange:
 # ----- planning: read, never write ---------------------------------------------------------------
 
 
+def same_text(current: bytes, wanted: bytes) -> bool:
+    """Whether two files have the same content once CRLF line endings are read as LF."""
+    return current == wanted or current.replace(b"\r\n", b"\n") == wanted.replace(b"\r\n", b"\n")
+
+
 def _blocking_ancestor(path: Path) -> Path | None:
     """An ancestor of ``path`` that exists but is not a folder."""
     for parent in reversed(path.parents):
@@ -96,7 +107,7 @@ def _change(want: DesiredFile) -> FileChange:
         return FileChange(path, ChangeKind.CREATE, want.content)
     except OSError as exc:
         raise UserError(f"cannot read {path}: {exc.strerror}") from None
-    if current == want.content:
+    if same_text(current, want.content):
         return FileChange(path, ChangeKind.UNCHANGED, want.content)
     if want.create_only:
         return FileChange(path, ChangeKind.SKIP, want.content, "exists; kept as it is")
@@ -208,7 +219,8 @@ def write_files(changes: Sequence[FileChange], *, durable: bool = False) -> list
 
 
 def write_if_changed(path: str | os.PathLike[str], data: str | bytes) -> bool:
-    """Write ``data`` to ``path`` only if its bytes differ; return whether the file was written.
+    """Write ``data`` to ``path`` only if its text differs (``same_text``); return whether the
+    file was written.
 
     ``str`` is encoded as UTF-8 with no newline translation. Missing folders are created. The
     file is flushed to disk before it replaces the old one (single files are scenes and the

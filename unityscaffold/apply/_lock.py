@@ -15,13 +15,21 @@ from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import UserError
 
-__all__ = ["LOCK_VERSION", "LockComponent", "LockFile", "lock_path", "sha256"]
+__all__ = ["LOCK_VERSION", "LockComponent", "LockFile", "lock_path", "recorded", "sha256"]
 
 LOCK_VERSION = 1
 
 
 def sha256(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
+
+
+def recorded(data: bytes, digest: str | None) -> bool:
+    """Whether ``data`` is what apply wrote when it recorded ``digest``, also after a checkout
+    turned its LF line endings into CRLF (apply writes LF)."""
+    if digest is None:
+        return False
+    return sha256(data) == digest or sha256(data.replace(b"\r\n", b"\n")) == digest
 
 
 def lock_path(manifest: Path) -> Path:

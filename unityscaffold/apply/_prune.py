@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply._lock import LockFile, sha256
+from unityscaffold.apply._lock import LockFile, recorded
 from unityscaffold.manifest.model import Manifest
 
 __all__ = ["Pruning", "plan_pruning"]
@@ -29,7 +29,7 @@ class Pruning:
 def _untouched(path: Path, digest: str, relative: str, notes: list[str]) -> bool | None:
     """Whether the file still has the content apply wrote; None when it is gone."""
     try:
-        return sha256(path.read_bytes()) == digest
+        return recorded(path.read_bytes(), digest)
     except FileNotFoundError:
         return None
     except OSError as exc:

@@ -5,6 +5,11 @@ inspector rewrites it from ``selectedRosVersion`` whenever it is shown; keeping 
 with the manifest avoids a silent flip. The edit is a text edit of the
 ``scriptingDefineSymbols`` block, which Unity writes either empty (``{}``) or as one
 ``Group: A;B`` line per build target group.
+
+Unity keeps defines per build target group, and ROS# reads the define of the group being
+built, so for ROS 2 every group Unity 2022.3 can build for without a console SDK gets it
+(``GROUPS``, under the names Unity writes), plus any other group the file already lists.
+A file checked out with CRLF line endings keeps them.
 """
 
 from __future__ import annotations
@@ -14,6 +19,21 @@ import re
 __all__ = ["DEFINE", "with_ros_define"]
 
 DEFINE = "ROS2"
+#: Build target groups as ProjectSettings.asset names them (``iPhone`` is iOS, ``Windows Store
+#: Apps`` is UWP); Unity lists them in this (ordinal) order.
+GROUPS = (
+    "Android",
+    "EmbeddedLinux",
+    "LinuxHeadlessSimulation",
+    "QNX",
+    "Server",
+    "Standalone",
+    "VisionOS",
+    "WebGL",
+    "Windows Store Apps",
+    "iPhone",
+    "tvOS",
+)
 _BLOCK = re.compile(
     r"^(?P<indent>[ ]+)scriptingDefineSymbols:(?P<rest>[^\n]*)\n"
     r"(?P<items>(?:(?P=indent)[ ]+[^\n]*\n)*)",
@@ -30,6 +50,22 @@ def _edit(symbols: str, want: bool) -> str:
 
 def with_ros_define(text: str, ros2: bool) -> str:
     """``text`` with ``ROS2`` defined in every build target group (ROS 2) or in none (ROS 1)."""
+    if "\r\n" in text:
+        lf = text.replace("\r\n", "\n")
+        edited = _with_ros_define(lf, ros2)
+        return text if edited == lf else edited.replace("\n", "\r\n")
+    return _with_ros_define(text, ros2)
+
+
+def _block(indent: str, entries: list[tuple[str, str]]) -> str:
+    if not entries:
+        return f"{indent}scriptingDefineSymbols: {{}}\n"
+    return f"{indent}scriptingDefineSymbols:\n" + "".join(
+        f"{indent}  {key}: {value}\n" for key, value in entries
+    )
+
+
+def _with_ros_define(text: str, ros2: bool) -> str:
     match = _BLOCK.search(text)
     if match is None:
         if not ros2:
@@ -37,9 +73,8 @@ def with_ros_define(text: str, ros2: bool) -> str:
         anchor = re.search(r"^PlayerSettings:\n", text, re.M)
         if anchor is None:
             return text
-        insert = f"  scriptingDefineSymbols:\n    Standalone: {DEFINE}\n"
         end = anchor.end()
-        return text[:end] + insert + text[end:]
+        return text[:end] + _block("  ", [(group, DEFINE) for group in GROUPS]) + text[end:]
     indent, rest = match["indent"], match["rest"].strip()
     entries: list[tuple[str, str]] = []
     for line in match["items"].splitlines():
@@ -47,14 +82,10 @@ def with_ros_define(text: str, ros2: bool) -> str:
         entries.append((key, value.strip()))
     if rest not in ("", "{}"):
         return text  # an inline form Unity does not write; leave it to the user
-    if ros2 and not entries:
-        entries = [("Standalone", "")]
+    if ros2:
+        listed = {key for key, _ in entries}
+        entries += [(group, "") for group in GROUPS if group not in listed]
+        entries.sort(key=lambda entry: entry[0])
     edited = [(key, _edit(value, ros2)) for key, value in entries]
     kept = [(key, value) for key, value in edited if value]
-    if not kept:
-        block = f"{indent}scriptingDefineSymbols: {{}}\n"
-    else:
-        block = f"{indent}scriptingDefineSymbols:\n" + "".join(
-            f"{indent}  {key}: {value}\n" for key, value in kept
-        )
-    return text[: match.start()] + block + text[match.end() :]
+    return text[: match.start()] + _block(indent, kept) + text[match.end() :]

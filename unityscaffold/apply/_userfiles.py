@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan
-from unityscaffold.apply._lock import LockFile, sha256
-from unityscaffold.fileout import DesiredFile
+from unityscaffold.apply._lock import LockFile, recorded, sha256
+from unityscaffold.fileout import DesiredFile, same_text
 from unityscaffold.manifest.model import Manifest
 
 __all__ = ["UserFiles", "plan_user_files"]
@@ -30,7 +30,7 @@ def _regenerates(path: Path, code: CodePlan) -> bool:
     """Whether this plan changes the generated half at ``path`` (so its signature may move)."""
     wanted = next(d.content for d in code.generated if d.path == path)
     try:
-        return path.read_bytes() != wanted
+        return not same_text(path.read_bytes(), wanted)
     except OSError:
         return True
 
@@ -41,22 +41,22 @@ def plan_user_files(manifest: Manifest, code: CodePlan, lock: LockFile) -> UserF
     for script in code.scripts:
         relative = manifest.asset_path(script.user_path)
         fresh = initial[script.user_path]
-        recorded = lock.user_files.get(relative)
+        digest = lock.user_files.get(relative)
         try:
             current = script.user_path.read_bytes()
         except FileNotFoundError:
             current = None
-        if current is None or recorded is None or current == fresh:
+        if current is None or digest is None or same_text(current, fresh):
             # New, unknown to the lock (kept as it is), or already as apply would create it.
             result.desired.append(DesiredFile(script.user_path, fresh, create_only=True))
             result.digests[relative] = sha256(fresh)
-        elif sha256(current) == recorded:
+        elif recorded(current, digest):
             # Untouched since apply created it, but made for an earlier generated half.
             result.desired.append(DesiredFile(script.user_path, fresh))
             result.digests[relative] = sha256(fresh)
         else:
-            result.digests[relative] = recorded
-            if recorded != sha256(fresh) and _regenerates(script.path, code):
+            result.digests[relative] = digest
+            if digest != sha256(fresh) and _regenerates(script.path, code):
                 result.notes.append(
                     f"{relative} was written for an earlier version of {script.view.class_name} "
                     f"({script.entry}); check that its methods still match {script.path.name}"

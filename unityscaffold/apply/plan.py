@@ -10,14 +10,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan, plan_code
-from unityscaffold.apply._lock import LockFile, lock_path, sha256
+from unityscaffold.apply._lock import LockFile, lock_path, recorded, sha256
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
 from unityscaffold.apply._settings import with_ros_define
 from unityscaffold.apply._userfiles import plan_user_files
 from unityscaffold.errors import LocatedError, UserError
-from unityscaffold.fileout import DesiredFile, FileChange, plan_files
+from unityscaffold.fileout import DesiredFile, FileChange, plan_files, same_text
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Manifest
@@ -82,10 +82,9 @@ def _conflicts(manifest: Manifest, generated: list[DesiredFile], lock: LockFile)
             current = want.path.read_bytes()
         except FileNotFoundError:
             continue
-        if current == want.content:
+        if same_text(current, want.content):
             continue
-        recorded = lock.files.get(manifest.asset_path(want.path))
-        if recorded != sha256(current):
+        if not recorded(current, lock.files.get(manifest.asset_path(want.path))):
             found.append(manifest.asset_path(want.path))
     return found
 

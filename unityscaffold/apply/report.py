@@ -41,7 +41,9 @@ def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
 
 
 def _text(data: bytes) -> list[str]:
-    return data.decode("utf-8", errors="replace").splitlines(keepends=True)
+    # CRLF is read as LF, as when planning: a Windows checkout is not a change on every line.
+    text = data.decode("utf-8", errors="replace").replace("\r\n", "\n")
+    return text.splitlines(keepends=True)
 
 
 def plan_diff(plan: Plan) -> str:
