@@ -81,7 +81,7 @@ def test_a_real_hand_edit_in_a_crlf_checkout_is_still_one(windows_sample):
     assert check.code == 1
     assert "edited by hand (apply will stop; apply --force overwrites): " in check.out
     assert "Assets/RosGenerated/Scripts/OdomSubscriber.cs" in check.out
-    assert check.out.count("edited by hand") == 1
+    assert check.out.count("edited by hand (") == 1
 
 
 def test_a_change_in_a_crlf_checkout_is_written_with_lf_and_shown_as_a_small_diff(windows_sample):

@@ -40,6 +40,20 @@ def _show(outcome: Outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
                 typer.echo(text, nl=False)
 
 
+def _drift_advice(manifest: Path, outcome: Outcome) -> str:
+    """The last line of a failed ``--check``: what differs and the command that fixes it."""
+    if outcome.plan.conflicts:
+        return (
+            f"{manifest}: generated files were edited by hand; move the change to the .User.cs "
+            f"files, then run `scaffold apply {manifest}` (or `scaffold apply --force "
+            f"{manifest}` to discard it)"
+        )
+    return (
+        f"{manifest}: the Unity project differs from the manifest; run "
+        f"`scaffold apply {manifest}` and commit the result"
+    )
+
+
 def register(app: typer.Typer) -> None:
     """Add ``apply``, ``plan`` and ``init`` to the root app."""
 
@@ -53,7 +67,12 @@ def register(app: typer.Typer) -> None:
         force: bool = typer.Option(
             False, "--force", help="Overwrite generated files even if edited by hand."
         ),
-        quiet: bool = typer.Option(False, "--quiet", "-q", help="Print only errors."),
+        quiet: bool = typer.Option(
+            False,
+            "--quiet",
+            "-q",
+            help="Print only errors (with --check: one line on stderr when the project differs).",
+        ),
         ros_env: bool = RosEnvOption,
         as_json: bool = JsonOption,
     ) -> None:
@@ -66,6 +85,9 @@ def register(app: typer.Typer) -> None:
         outcome = run(manifest, mode, force=force, use_environment=ros_env)
         _show(outcome, quiet=quiet, as_json=as_json, diff=dry_run)
         if mode is Mode.CHECK and not (outcome.plan.in_sync and not outcome.plan.conflicts):
+            if not as_json:
+                # Also under --quiet: a check that fails must say why and what to do.
+                typer.echo(_drift_advice(manifest, outcome), err=quiet)
             raise typer.Exit(int(Exit.DRIFT))
         if mode is Mode.APPLY and not quiet and not as_json:
             typer.echo(f"wrote {len(outcome.written)} files, removed {len(outcome.deleted)}")
