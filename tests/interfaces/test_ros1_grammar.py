@@ -80,6 +80,14 @@ def test_comments_document_the_message_and_the_declarations():
         ("int32 X=1=2\n", 1, 8, "exactly one '='"),
         ("int32 x\nint32 x\n", 2, 7, "duplicate field name"),
         ("bool B=maybe\n", 1, 8, "invalid bool constant value"),
+        # int("²") fails, so genmsg's is_valid_msg_type refuses it too.
+        ("int32[\u00b2] a\n", 1, 1, "not a legal field type"),
+        ("int32[" + "9" * 5000 + "] a\n", 1, 7, "invalid array size"),
+        ("int32[11111111111111111111] a\n", 1, 7, "invalid array size"),
+        ("int32[2147483648] a\n", 1, 7, "invalid array size"),
+        # genmsg accepts the line, then fails to load 'geometry_msgs/msg/Point'.
+        ("geometry_msgs/msg/Point p\n", 1, 1, "not a ROS 1 type name"),
+        ("geometry_msgs/ p\n", 1, 1, "not a ROS 1 type name"),
     ],
 )
 def test_errors_name_line_and_column(text, line, col, fragment):
@@ -89,6 +97,19 @@ def test_errors_name_line_and_column(text, line, col, fragment):
     assert (diagnostic.location.line, diagnostic.location.col) == (line, col)
     assert fragment in diagnostic.message
     assert caught.value.render().startswith(f"pkg/msg/Msg.msg:{line}:{col}: error:")
+
+
+def test_largest_array_csharp_can_hold_and_decimal_digits_int_reads_are_sizes():
+    spec = parse("int32[2147483647] big\nint32[\u0663] arabic\nint32[007] padded\n")
+    assert [f.type.size for f in spec.fields] == [2**31 - 1, 3, 7]
+
+
+def test_a_ros2_style_name_gets_the_ros1_form_as_hint():
+    with pytest.raises(LocatedError) as caught:
+        parse("geometry_msgs/msg/Point[2] p\n")
+    assert caught.value.diagnostics[0].hint == (
+        "ROS 1 names types pkg/Name, without the msg/ of ROS 2 (here geometry_msgs/Point[2])"
+    )
 
 
 def test_every_bad_line_is_reported_not_just_the_first():

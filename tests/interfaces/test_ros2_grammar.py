@@ -49,13 +49,22 @@ def test_byte_is_unsigned_and_there_is_no_header_shorthand():
         ("int32 bad__name\n", 1, 7, "not a valid field name"),
         ("int32 lower=1\n", 1, 7, "not a valid constant name"),
         ("int32[0] x\n", 1, 7, "invalid array size"),
-        ("string<=0 s\n", 1, 1, "invalid string bound"),
+        ("string<=0 s\n", 1, 9, "invalid string bound"),
         ("uint8 x 300\n", 1, 9, "out of range"),
         ("int32[2] v [1]\n", 1, 12, "exactly 2 elements"),
         ("pkg/msg/Deep x\n", 1, 1, "not a valid type name"),
         ("geometry_msgs/Point p 1\n", 1, 23, "cannot have default values"),
         ("int32\n", 1, 6, "not followed by a name"),
         (" int32 x\n", 1, 1, "beginning of the line"),
+        ("string<=\u00b2 s\n", 1, 9, "invalid string bound"),
+        ("string<=" + "9" * 5000 + " s\n", 1, 9, "invalid string bound"),
+        ("wstring<=2147483648 s\n", 1, 10, "invalid string bound"),
+        ("int32[" + "9" * 5000 + "] x\n", 1, 7, "invalid array size"),
+        ("int32[<=2147483648] x\n", 1, 7, "invalid array size"),
+        ("int32[11111111111111111111] x\n", 1, 7, "invalid array size"),
+        ("int32 STATUS_MAX_LINEAR_VELOCITY_LIMITx=1\n", 1, 7, "not a valid constant name"),
+        ("int32 A__B=1\n", 1, 7, "not a valid constant name"),
+        ("int32 AB_=1\n", 1, 7, "not a valid constant name"),
     ],
 )
 def test_errors_name_line_and_column(text, line, col, fragment):
@@ -64,6 +73,31 @@ def test_errors_name_line_and_column(text, line, col, fragment):
     diagnostic = caught.value.diagnostics[0]
     assert (diagnostic.location.line, diagnostic.location.col) == (line + 2, col)
     assert fragment in diagnostic.message
+
+
+def test_sizes_and_bounds_are_read_as_rosidl_reads_them_with_int():
+    spec = parse("string<=+5 a\nstring<=5_0 b\nint32[+3] c\nint32[<=2147483647] d\n")
+    assert [(f.type.string_bound, f.type.size) for f in spec.fields] == [
+        (5, None),
+        (50, None),
+        (None, 3),
+        (None, 2**31 - 1),
+    ]
+
+
+def test_constant_names_are_rosidls_pattern_checked_in_linear_time():
+    long_bad = "A" + "_A" * 20000 + "x"  # rosidl's own pattern would never finish on this
+    with pytest.raises(LocatedError):
+        parse(f"int32 {long_bad}=1\n")
+    names = ["A", "A1", "A_B", "AB_C1_D", "A_1"]
+    spec = parse("".join(f"int32 {n}=1\n" for n in names))
+    assert [c.name for c in spec.constants] == names
+
+
+@pytest.mark.parametrize("quote", ['"', "'"])
+def test_a_lone_quote_is_the_empty_string_as_in_rosidl(quote):
+    spec = parse(f"string S={quote}\nstring s {quote}\n")
+    assert (spec.constants[0].value, spec.fields[0].default) == ("", "")
 
 
 def test_service_needs_exactly_one_separator_line():

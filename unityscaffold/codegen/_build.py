@@ -20,7 +20,12 @@ from unityscaffold.codegen.naming import CsClass, escape_identifier
 from unityscaffold.errors import LocatedError, SourceLocation, located_at
 from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
 
-__all__ = ["FileContext", "build_message", "message_references"]
+__all__ = ["INLINE_ELEMENTS", "FileContext", "build_message", "message_references"]
+
+INLINE_ELEMENTS = 64
+"""A fixed array of messages or strings up to this size is initialised element by element
+(``new T[] { new T(), … }``); a larger one with ``Array.ConvertAll``, so that the generated
+text does not grow with the size."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,9 +76,12 @@ def _initial(ref: TypeRef, element: str, primitive: str | None, default: object)
     if ref.array is ArrayKind.NONE:
         return single
     if ref.array is ArrayKind.FIXED and ref.size:
-        if primitive is None or primitive == "string":
+        if primitive is not None and primitive != "string":
+            return f"new {element}[{ref.size}]"
+        if ref.size <= INLINE_ELEMENTS:
             return f"new {element}[] {{ {', '.join([single] * ref.size)} }}"
-        return f"new {element}[{ref.size}]"
+        # Larger arrays get an expression of constant length instead of N copies of it.
+        return f"global::System.Array.ConvertAll(new {element}[{ref.size}], _ => {single})"
     return f"new {element}[0]"
 
 

@@ -14,6 +14,7 @@ from typing import TypeAlias
 from unityscaffold.errors import SourceLocation
 
 __all__ = [
+    "MAX_SIZE",
     "ROS1_BUILTINS",
     "ROS1_PRIMITIVES",
     "ROS2_PRIMITIVES",
@@ -91,6 +92,10 @@ ROS2_PRIMITIVES: tuple[str, ...] = (
     "string",
     "wstring",
 )
+
+MAX_SIZE = 2**31 - 1
+"""The largest array size or string bound we accept: C# arrays and strings are indexed by
+``int``, so a larger one could never become C#. Both dialects refuse more, at the definition."""
 
 Scalar: TypeAlias = bool | int | float | str
 Value: TypeAlias = Scalar | tuple[Scalar, ...]

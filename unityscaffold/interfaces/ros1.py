@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from unityscaffold.errors import DiagnosticSink, LocatedError, SourceLocation
 from unityscaffold.interfaces._comments import CommentTracker, clean_block
 from unityscaffold.interfaces.model import (
+    MAX_SIZE,
     ROS1_BUILTINS,
     ROS1_PRIMITIVES,
     ActionSpec,
@@ -102,7 +103,7 @@ def _is_valid_type(token: str) -> bool:
             inside = True
         elif char == "]":
             inside = False
-        elif not char.isdigit():
+        elif not char.isdecimal():  # what int(char) accepts, genmsg's test
             return False
     return not inside
 
@@ -118,13 +119,30 @@ def _resolve(token: str, package: str) -> str:
     return f"{package}/{token}"
 
 
-def _type_ref(resolved: str) -> TypeRef:
+def _type_ref(resolved: str, size: int | None) -> TypeRef:
     if "[" not in resolved:
         return TypeRef(resolved)
-    base, _, rest = resolved.partition("[")
-    if rest == "]":
+    base = resolved.partition("[")[0]
+    if size is None:
         return TypeRef(base, ArrayKind.UNBOUNDED)
-    return TypeRef(base, ArrayKind.FIXED, int(rest[:-1]))
+    return TypeRef(base, ArrayKind.FIXED, size)
+
+
+def _array_size(token: str) -> int | None:
+    """The N of ``T[N]`` (None for ``T[]``); raises ValueError when N is not a usable size.
+
+    genmsg reads N with ``int()``; one that ``int()`` refuses (such as 5,000 digits) it refuses
+    too. A size C# cannot index is refused here, where genmsg would accept it.
+    """
+    if "[" not in token:
+        return None
+    digits = token[token.find("[") + 1 : -1]
+    if not digits:
+        return None
+    size = int(digits)  # ValueError past Python's limit on digits, as in genmsg
+    if size > MAX_SIZE:
+        raise ValueError
+    return size
 
 
 def _field(line: _Line, code: str, package: str, out: DiagnosticSink) -> Field | None:
@@ -161,8 +179,38 @@ def _field(line: _Line, code: str, package: str, out: DiagnosticSink) -> Field |
             expected="a one-dimensional array such as T[] or T[N]",
         )
         return None
+    parts = token.split("[", 1)[0].split("/")
+    if len(parts) > 2 or "" in parts:
+        # genmsg accepts these lines but fails when it loads the type they name.
+        out.error(
+            line.at(_column_of(line.text, token)),
+            f"'{token}' is not a ROS 1 type name",
+            expected="Name or pkg/Name",
+            hint="ROS 1 names types pkg/Name, without the msg/ of ROS 2"
+            f" (here {_ros1_form(token)})"
+            if len(parts) > 2 and "" not in parts
+            else None,
+        )
+        return None
+    try:
+        size = _array_size(token)
+    except ValueError:
+        out.error(
+            line.at(_column_of(line.text, "[", line.text.find(token)) + 1),
+            f"invalid array size in '{token}'",
+            expected=f"an integer from 0 to {MAX_SIZE}",
+            hint="C# arrays hold at most 2^31-1 elements",
+        )
+        return None
     resolved = _resolve(token, package)
-    return Field(_type_ref(resolved), name, type_text=resolved)
+    return Field(_type_ref(resolved, size), name, type_text=resolved)
+
+
+def _ros1_form(token: str) -> str:
+    """``pkg/msg/Name[3]`` as ROS 1 writes it, ``pkg/Name[3]``."""
+    base, bracket, rest = token.partition("[")
+    parts = base.split("/")
+    return f"{parts[0]}/{parts[-1]}{bracket}{rest}"
 
 
 # --- constants ------------------------------------------------------------------------------

@@ -15,6 +15,7 @@ import re
 from unityscaffold.errors import DiagnosticSink, LocatedError, SourceLocation
 from unityscaffold.interfaces._comments import CommentTracker, clean_block
 from unityscaffold.interfaces.model import (
+    MAX_SIZE,
     ROS2_PRIMITIVES,
     ActionSpec,
     ArrayKind,
@@ -46,7 +47,9 @@ __all__ = ["parse_action", "parse_message", "parse_service"]
 _COMPAT_PRIMITIVES = ("time", "duration")
 _PACKAGE_OR_FIELD = re.compile(r"^(?!.*__)(?!.*_$)[a-z][a-z0-9_]*$")
 _MESSAGE_NAME = re.compile(r"^[A-Z][A-Za-z0-9]*$")
-_CONSTANT_NAME = re.compile(r"^[A-Z]([A-Z0-9_]?[A-Z0-9]+)*$")
+# rosidl's pattern is ^[A-Z]([A-Z0-9_]?[A-Z0-9]+)*$, which backtracks exponentially on a long
+# name that fails at its end; this one accepts the same names in linear time.
+_CONSTANT_NAME = re.compile(r"\A[A-Z](?:_?[A-Z0-9])*\Z")
 _FIELD_PATTERN_TEXT = "lower case letters, digits and single '_' (not at the end)"
 
 
@@ -71,18 +74,25 @@ def _array_part(token: str, col: int) -> tuple[str, ArrayKind, int | None]:
     if inside == "":
         return base, ArrayKind.UNBOUNDED, None
     bounded = inside.startswith("<=")
-    digits = inside[2:] if bounded else inside
-    try:
-        size = int(digits)
-    except ValueError:
-        size = 0
-    if size <= 0:
+    size = _positive(inside[2:] if bounded else inside)
+    if size is None:
         raise _Problem(
             col + open_at + 1,
             f"invalid array size '{inside}' in '{token}'",
-            expected="an integer > 0, optionally prefixed with '<='",
+            expected=f"an integer from 1 to {MAX_SIZE}, optionally prefixed with '<='",
         )
     return base, ArrayKind.BOUNDED if bounded else ArrayKind.FIXED, size
+
+
+def _positive(text: str) -> int | None:
+    """A size or bound as rosidl reads it (Python's ``int()``, so ``+5`` and ``5_0`` too), or
+    None when it is not an integer from 1 to MAX_SIZE (which C# can index; rosidl has no upper
+    limit)."""
+    try:
+        number = int(text)
+    except ValueError:  # also past Python's limit on digits, as in rosidl
+        return None
+    return number if 0 < number <= MAX_SIZE else None
 
 
 def _type_ref(token: str, package: str, col: int) -> TypeRef:
@@ -91,13 +101,12 @@ def _type_ref(token: str, package: str, col: int) -> TypeRef:
         return TypeRef(base, array, size)
     for string_type in ("string", "wstring"):
         if base.startswith(string_type + "<="):
-            bound_text = base[len(string_type) + 2 :]
-            bound = int(bound_text) if bound_text.isdigit() else 0
-            if bound <= 0:
+            bound = _positive(base[len(string_type) + 2 :])
+            if bound is None:
                 raise _Problem(
-                    col,
+                    col + len(string_type) + 2,
                     f"invalid string bound in '{base}'",
-                    expected=f"{string_type}<=N with N an integer > 0",
+                    expected=f"{string_type}<=N with N an integer from 1 to {MAX_SIZE}",
                 )
             return TypeRef(string_type, array, size, string_bound=bound)
     parts = base.split("/")
@@ -128,7 +137,8 @@ def _int_range(type_name: str) -> tuple[int, int]:
 
 def _unquote(text: str) -> str:
     for quote in ('"', "'"):
-        if len(text) >= 2 and text.startswith(quote) and text.endswith(quote):
+        # As in rosidl, a lone quote is both the opening and the closing one: the empty string.
+        if text.startswith(quote) and text.endswith(quote):
             inner = text[1:-1]
             if re.search(rf"(?<!\\){quote}", inner):
                 raise ValueError("inner quotes must be escaped with '\\'")
