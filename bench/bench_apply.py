@@ -2,8 +2,14 @@
 
 Runs, side by side in one session: apply from clean (generated files, lock and scene wiring
 removed first) and the no-op re-apply, each as a fresh `python -m unityscaffold` process on a
-copy of sample_project. Prints best and median wall times. Aims: < 1 s from clean, < 0.4 s no-op.
-Run: python3 bench/bench_apply.py [--rounds N]
+copy of sample_project. Prints best and median wall times, beside the time a process takes to
+import the dependencies alone. Aims: < 0.6 s from clean, < 0.3 s no-op.
+
+Then the manifest-size sweep: for N topics of standard ROS 1 types on a fresh `init` project,
+apply (writes everything), the no-op re-apply and `apply --check`, each a whole process, with
+the cost per topic; the cost per topic should stay flat as N grows.
+
+Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...]
 """
 
 from __future__ import annotations
@@ -38,9 +44,71 @@ def timed_apply(project: Path) -> float:
     return time.perf_counter() - start
 
 
+STANDARD_TYPES = [
+    ("geometry_msgs/Twist", "publish"),
+    ("nav_msgs/Odometry", "subscribe"),
+    ("sensor_msgs/LaserScan", "subscribe"),
+    ("std_msgs/String", "publish"),
+    ("sensor_msgs/Imu", "subscribe"),
+    ("geometry_msgs/PoseStamped", "publish"),
+    ("sensor_msgs/JointState", "subscribe"),
+    ("std_msgs/Float64", "publish"),
+]
+
+
+def timed(*args: str, expect: int = 0) -> float:
+    start = time.perf_counter()
+    done = subprocess.run(
+        [sys.executable, "-m", "unityscaffold", *args], stdout=subprocess.DEVNULL, check=False
+    )
+    elapsed = time.perf_counter() - start
+    assert done.returncode == expect, (args, done.returncode)
+    return elapsed
+
+
+def sweep(sizes: list[int]) -> None:
+    print(
+        f"{'topics':>7} {'apply s':>8} {'no-op s':>8} {'check s':>8}   per topic (ms): "
+        "apply / no-op / check"
+    )
+    for count in sizes:
+        with tempfile.TemporaryDirectory() as tmp:
+            project = Path(tmp) / "robot"
+            subprocess.run(
+                [sys.executable, "-m", "unityscaffold", "init", "--ros", "1", str(project)],
+                check=True,
+                stdout=subprocess.DEVNULL,
+            )
+            manifest = project / "robot.yaml"
+            lines = [
+                f"  - {{name: /t{i}, type: {STANDARD_TYPES[i % len(STANDARD_TYPES)][0]}, "
+                f"direction: {STANDARD_TYPES[i % len(STANDARD_TYPES)][1]}, "
+                f"gameobject: Robot{i % 50}}}\n"
+                for i in range(count)
+            ]
+            text = manifest.read_text(encoding="utf-8")
+            text = text.replace("topics:\n", "topics:\n" + "".join(lines), 1)
+            manifest.write_text(text, encoding="utf-8")
+            apply = timed("apply", "--quiet", str(manifest))
+            noop = timed("apply", "--quiet", str(manifest))
+            check = timed("apply", "--check", str(manifest))
+            per = "/".join(f"{t / count * 1000:.2f}" for t in (apply, noop, check))
+            print(f"{count:7d} {apply:8.2f} {noop:8.2f} {check:8.2f}   {per}", flush=True)
+
+
+def import_cost() -> float:
+    """A process that imports the dependencies the CLI needs, and nothing of ours."""
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-c", "import jinja2, ruamel.yaml, typer, yaml"], check=False)
+    return time.perf_counter() - start
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--rounds", type=int, default=7)
+    parser.add_argument("--rounds", type=int, default=9)
+    parser.add_argument(
+        "--sizes", type=int, nargs="*", default=[100, 500, 1000, 2000, 4000], help="topics"
+    )
     args = parser.parse_args()
     clean, noop = [], []
     with tempfile.TemporaryDirectory() as tmp:
@@ -50,15 +118,24 @@ def main() -> None:
             reset_to_clean(project)
             clean.append(timed_apply(project))
             noop.append(timed_apply(project))
-    start = time.perf_counter()
-    subprocess.run([sys.executable, "-c", "pass"], check=True)
-    bare = time.perf_counter() - start
-    for label, times, aim in (("apply from clean", clean, 1.0), ("no-op re-apply", noop, 0.4)):
+    bare, deps = [], []
+    for _ in range(args.rounds):
+        start = time.perf_counter()
+        subprocess.run([sys.executable, "-c", "pass"], check=True)
+        bare.append(time.perf_counter() - start)
+        deps.append(import_cost())
+    for label, times, aim in (("apply from clean", clean, 0.6), ("no-op re-apply", noop, 0.3)):
         print(
             f"{label:<18} best {min(times) * 1000:6.0f} ms  median "
             f"{statistics.median(times) * 1000:6.0f} ms  (aim < {aim * 1000:.0f} ms)"
         )
-    print(f"{'bare python start':<18} {bare * 1000:6.0f} ms  (for reference)")
+    for label, times in (("bare python start", bare), ("import deps alone", deps)):
+        print(
+            f"{label:<18} best {min(times) * 1000:6.0f} ms  median "
+            f"{statistics.median(times) * 1000:6.0f} ms  (for reference)"
+        )
+    if args.sizes:
+        sweep(args.sizes)
 
 
 if __name__ == "__main__":

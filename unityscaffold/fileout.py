@@ -83,29 +83,32 @@ def same_text(current: bytes, wanted: bytes) -> bool:
     return current == wanted or current.replace(b"\r\n", b"\n") == wanted.replace(b"\r\n", b"\n")
 
 
-def _blocking_ancestor(path: Path) -> Path | None:
-    """An ancestor of ``path`` that exists but is not a folder."""
-    for parent in reversed(path.parents):
-        if parent.exists() and not parent.is_dir():
-            return parent
-    return None
-
-
-def _change(want: DesiredFile) -> FileChange:
-    path = want.path
-    if path.is_dir():
-        raise UserError(f"cannot write {path}: a folder of that name exists")
-    blocker = _blocking_ancestor(path)
-    if blocker is not None:
-        raise UserError(
-            f"cannot write {path}: {blocker} exists and is not a folder",
-            hint="choose another output folder, or move that file away",
+def _blocking_ancestor(path: Path, seen: dict[Path, Path | None]) -> Path | None:
+    """An ancestor of ``path`` that exists but is not a folder (``seen`` caches by folder)."""
+    folder = path.parent
+    if folder not in seen:
+        seen[folder] = next(
+            (p for p in reversed(path.parents) if p.exists() and not p.is_dir()), None
         )
+    return seen[folder]
+
+
+def _change(want: DesiredFile, seen: dict[Path, Path | None]) -> FileChange:
+    path = want.path
     try:
+        # Read first: an existing file settles every question below with one system call.
         current = path.read_bytes()
-    except FileNotFoundError:
-        return FileChange(path, ChangeKind.CREATE, want.content)
     except OSError as exc:
+        if path.is_dir():
+            raise UserError(f"cannot write {path}: a folder of that name exists") from None
+        blocker = _blocking_ancestor(path, seen)
+        if blocker is not None:
+            raise UserError(
+                f"cannot write {path}: {blocker} exists and is not a folder",
+                hint="choose another output folder, or move that file away",
+            ) from None
+        if isinstance(exc, FileNotFoundError):
+            return FileChange(path, ChangeKind.CREATE, want.content)
         raise UserError(f"cannot read {path}: {exc.strerror}") from None
     if same_text(current, want.content):
         return FileChange(path, ChangeKind.UNCHANGED, want.content)
@@ -121,7 +124,8 @@ def plan_files(desired: Iterable[DesiredFile]) -> list[FileChange]:
         other = by_path.setdefault(want.path, want)
         if other.content != want.content:
             raise UserError(f"two different contents planned for {want.path}")
-    return [_change(by_path[path]) for path in sorted(by_path)]
+    seen: dict[Path, Path | None] = {}
+    return [_change(by_path[path], seen) for path in sorted(by_path)]
 
 
 # ----- writing: temporary files first, renamed into place at the end -----------------------------

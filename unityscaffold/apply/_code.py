@@ -220,8 +220,8 @@ def plan_code(
     # covers Messages/ and below; these are the ones above it and Scripts/).
     folders = {
         parent
-        for d in (*generated, *created_once)
-        for parent in d.path.parents
+        for folder in {d.path.parent for d in (*generated, *created_once)}
+        for parent in (folder, *folder.parents)
         if messages_dir not in parent.parents and parent != messages_dir
     }
     created_once += _folder_metas(manifest, folders, salt)

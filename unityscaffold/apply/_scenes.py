@@ -93,13 +93,13 @@ class _SceneEditor:
         go = self.gameobject(path, create, where)
         self.wanted.add((path, script.guid))
         existed = self.doc.find_component(go, script.guid, script.file_id) is not None
-        before = self.doc.text()
+        revision = self.doc.revision
         with located_at(where):
             component = self.doc.ensure_component(go, script, fields)
         name = script.class_name or script.guid
         if not existed:
             self.plan.edits.append(f"add {name} to {path}")
-        elif self.doc.text() != before:
+        elif self.doc.revision != revision:  # an edit was recorded: a field's value changed
             self.plan.edits.append(f"update {name} on {path}")
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.

@@ -96,8 +96,12 @@ def _check_inside(project: Path, paths: list[Path]) -> None:
     the output folder (or a stale lock) could still lead elsewhere.
     """
     root = project.resolve()
+    resolved: dict[Path, Path] = {}
     for path in paths:
-        real = path.parent.resolve() / path.name
+        folder = resolved.get(path.parent)
+        if folder is None:
+            folder = resolved[path.parent] = path.parent.resolve()
+        real = folder / path.name
         if root not in real.parents:
             raise UserError(
                 f"refusing to touch {path}: it resolves to {real}, outside the "

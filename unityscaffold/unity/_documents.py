@@ -40,6 +40,7 @@ class Documents:
         for doc in docs:
             self._by_id.setdefault(doc.file_id, doc)
         self._changed: set[int] = set()
+        self._revision = 0
         self._hierarchy: Hierarchy | None = None
         # Unity writes scenes sorted by fileID; a file that is not keeps its own order.
         self._sorted = all(a.file_id <= b.file_id for a, b in itertools.pairwise(docs))
@@ -55,6 +56,11 @@ class Documents:
     def changed(self) -> Set[int]:
         """fileIDs of the documents inserted, edited or removed since loading."""
         return self._changed
+
+    @property
+    def revision(self) -> int:
+        """The number of ``insert``, ``remove`` and ``touch`` calls so far."""
+        return self._revision
 
     def __contains__(self, file_id: object) -> bool:
         return file_id in self._by_id
@@ -105,15 +111,18 @@ class Documents:
         self._docs.insert(index, doc)
         self._by_id[doc.file_id] = doc
         self._changed.add(doc.file_id)
+        self._revision += 1
 
     def remove(self, doc: Doc) -> None:
         self._docs.remove(doc)
         del self._by_id[doc.file_id]
         self._changed.add(doc.file_id)
+        self._revision += 1
 
     def touch(self, doc: Doc) -> None:
         """Record that ``doc``'s text was edited in place."""
         self._changed.add(doc.file_id)
+        self._revision += 1
 
     def invalidate(self) -> None:
         """Drop the hierarchy index after the tree changed (it is rebuilt on the next query)."""

@@ -126,11 +126,13 @@ def list_refs(doc: Doc, key: str) -> list[int]:
 
 def script_of(doc: Doc) -> tuple[int, str, int] | None:
     """(fileID, guid, type) of ``m_Script``, tolerating a flow mapping folded over lines."""
+    if "script" in doc.cache:
+        return doc.cache["script"]  # type: ignore[return-value]
     text = field_text(doc, "m_Script")
-    if text is None:
-        return None
-    match = _SCRIPT_RE.search(text)
-    return (int(match.group(1)), match.group(2), int(match.group(3))) if match else None
+    match = _SCRIPT_RE.search(text) if text is not None else None
+    found = (int(match.group(1)), match.group(2), int(match.group(3))) if match else None
+    doc.cache["script"] = found
+    return found
 
 
 def local_refs(text: str) -> list[re.Match[str]]:

@@ -97,6 +97,11 @@ class SceneDocument:
         return self._docs.text()
 
     @property
+    def revision(self) -> int:
+        """How many edits were recorded so far: the text can change only when this grows."""
+        return self._docs.revision
+
+    @property
     def changed(self) -> bool:
         return bool(self._docs.changed) and self.text() != self.original_text
 
@@ -177,13 +182,13 @@ class SceneDocument:
         self, go: GameObject | str, script_guid: str, script_file_id: int = MONOSCRIPT_FILE_ID
     ) -> SceneComponent | None:
         """The first component of ``go`` running that script, or None."""
-        for comp in self.components_of(go):
-            if (
-                comp.script
-                and comp.script.guid == script_guid
-                and comp.script.file_id == script_file_id
-            ):
-                return comp
+        for file_id in self._go(go).component_ids:
+            doc = self._docs.get(file_id)
+            if doc is None or doc.class_id != 114:
+                continue
+            script = F.script_of(doc)
+            if script is not None and script[1] == script_guid and script[0] == script_file_id:
+                return self.component(file_id)
         return None
 
     def field(self, component: SceneComponent | int, name: str) -> object:
