@@ -19,6 +19,13 @@ DATA = HERE / "data"
 GOLDEN = HERE / "golden"
 
 
+# The action bases of the ROS# stub use these; compile them with any set that has no action.
+STUB_NEEDS = {
+    Dialect.ROS1: ("std_msgs/Header", "actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus"),
+    Dialect.ROS2: ("std_msgs/msg/Header", "action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus"),
+}
+
+
 def write_tree(code: GeneratedCode, out: Path) -> list[Path]:
     """Write every generated file under ``out``; return their paths."""
     paths = []

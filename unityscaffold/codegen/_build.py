@@ -134,8 +134,22 @@ def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> Consta
     return ConstantView(name, cs_type, value, doc_lines(constant.comment))
 
 
+# Members of System.Object, which every message class inherits: a field or constant of the same
+# name would hide one (CS0108, CS0114).
+_INHERITED = (
+    "Equals",
+    "Finalize",
+    "GetHashCode",
+    "GetType",
+    "MemberwiseClone",
+    "ReferenceEquals",
+    "ToString",
+)
+
+
 def _check_names(spec: MessageSpec, class_name: str) -> None:
     seen = {"RosMessageName": "the RosMessageName constant", class_name: "the class"}
+    seen.update({name: f"the inherited member {name}()" for name in _INHERITED})
     items: list[Constant | Field] = [*spec.constants, *spec.fields]
     for item in items:
         where = item.location or _where(spec)
@@ -145,8 +159,8 @@ def _check_names(spec: MessageSpec, class_name: str) -> None:
             raise LocatedError.at(
                 where,
                 f"'{item.name}' has the same C# name as {seen[item.name]} of class {class_name}",
-                hint="C# allows one member per name, "
-                "and none named like its class; rename the field",
+                hint="C# allows one member per name, none named like its class, "
+                "and none named like a member every class inherits; rename the field",
             )
         seen[item.name] = f"member '{item.name}'"
 

@@ -14,13 +14,14 @@ from unityscaffold.codegen.naming import (
     ROSSHARP_ROOT_NAMESPACE,
     ClassClash,
     CsClass,
+    check_class_name,
     class_name,
     namespace_segment,
     rossharp_class,
     validate_namespace,
 )
 from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX, ClassRole
-from unityscaffold.errors import LocatedError, SourceLocation
+from unityscaffold.errors import LocatedError, SourceLocation, located_at
 from unityscaffold.interfaces.model import (
     ActionSpec,
     Dialect,
@@ -229,6 +230,8 @@ def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
         ros_name: str,
         identity: Interface,
     ) -> ClassEntry:
+        with located_at(SourceLocation(unit.source or unit.full_name)):
+            check_class_name(name)
         return ClassEntry(
             unit,
             role,

@@ -8,6 +8,7 @@ for non-finite values, and strings with every character outside printable ASCII 
 from __future__ import annotations
 
 import math
+import struct
 from collections.abc import Sequence
 
 from unityscaffold.interfaces.model import Scalar
@@ -52,6 +53,13 @@ def string_literal(text: str) -> str:
     return '"' + "".join(out) + '"'
 
 
+def _fits_float32(value: float) -> bool:
+    try:
+        return not math.isinf(struct.unpack("<f", struct.pack("<f", value))[0])
+    except OverflowError:
+        return False
+
+
 def _float_literal(value: float, cs_type: str) -> str:
     if math.isnan(value):
         return f"{cs_type}.NaN"
@@ -59,6 +67,9 @@ def _float_literal(value: float, cs_type: str) -> str:
         return f"{cs_type}.{'Positive' if value > 0 else 'Negative'}Infinity"
     text = repr(float(value))
     if cs_type == "float":
+        if not _fits_float32(value):
+            # C# refuses a float literal that rounds to infinity (CS0594).
+            raise ValueError(f"{text} does not fit in a C# float (at most 3.4028235e+38)")
         return text + "f"
     return text if ("." in text or "e" in text) else text + ".0"
 

@@ -6,6 +6,7 @@ are final C# text (escaped identifiers, type names, literals, ``///`` lines).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -22,7 +23,18 @@ __all__ = [
 ]
 
 
+# C# ends a line at any of these, so inside a /// line they would turn the rest into code.
+_CS_NEWLINES = "\r\n\u0085\u2028\u2029"
+# XML 1.0 allows no other control characters, not even as character references.
+_XML_FORBIDDEN = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff\ud800-\udfff]")
+
+
 def _xml_escape(text: str) -> str:
+    """One comment line as XML text on one C# line: markup escaped, line breaks made spaces,
+    characters XML cannot hold replaced by U+FFFD."""
+    for char in _CS_NEWLINES:
+        text = text.replace(char, " ")
+    text = _XML_FORBIDDEN.sub("\ufffd", text)
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 

@@ -12,10 +12,13 @@ from unityscaffold.errors import UserError
 
 __all__ = [
     "CSHARP_KEYWORDS",
+    "MAX_CLASS_NAME",
+    "MAX_IDENTIFIER",
     "ROSSHARP_MESSAGE",
     "ROSSHARP_ROOT_NAMESPACE",
     "ClassClash",
     "CsClass",
+    "check_class_name",
     "class_name",
     "escape_identifier",
     "is_identifier",
@@ -94,6 +97,14 @@ _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _PACKAGE_MARKERS = ("_msgs", "_srvs", "_actions")
 
 
+MAX_IDENTIFIER = 511
+"""The longest member name we generate: mcs refuses identifiers over 512 characters (CS0645),
+and a field with a size check gets a backing field one ``_`` longer."""
+MAX_CLASS_NAME = 247
+"""The longest class name we generate: its file ``Name.cs.meta`` must fit the 255 bytes file
+systems allow for a name."""
+
+
 def is_identifier(name: str) -> bool:
     """Whether ``name`` is an ASCII C# identifier (keywords included: they can be escaped)."""
     return _IDENTIFIER.fullmatch(name) is not None
@@ -105,6 +116,11 @@ def escape_identifier(name: str) -> str:
         raise UserError(
             f"'{name}' cannot become a C# identifier",
             hint="C# names use letters, digits and '_' and do not start with a digit",
+        )
+    if len(name) > MAX_IDENTIFIER:
+        raise UserError(
+            f"'{name[:20]}…' ({len(name)} characters) is too long for a C# identifier",
+            hint=f"C# compilers take names of at most {MAX_IDENTIFIER} characters; rename it",
         )
     return f"@{name}" if name in CSHARP_KEYWORDS else name
 
@@ -140,6 +156,17 @@ def class_name(ros_name: str) -> str:
     name = ros_name[:1].upper() + ros_name[1:]
     if not is_identifier(name):
         raise UserError(f"type name '{ros_name}' cannot become a C# class name")
+    return name
+
+
+def check_class_name(name: str) -> str:
+    """``name`` if a class of that name fits in a file name, else a UserError."""
+    if len(name) > MAX_CLASS_NAME:
+        raise UserError(
+            f"the C# class '{name[:20]}…' would have {len(name)} characters, more than its file"
+            f" name can hold ({MAX_CLASS_NAME})",
+            hint="rename the type",
+        )
     return name
 
 

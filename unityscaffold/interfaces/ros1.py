@@ -186,8 +186,7 @@ def _field(line: _Line, code: str, package: str, out: DiagnosticSink) -> Field |
             line.at(_column_of(line.text, token)),
             f"'{token}' is not a ROS 1 type name",
             expected="Name or pkg/Name",
-            hint="ROS 1 names types pkg/Name, without the msg/ of ROS 2"
-            f" (here {_ros1_form(token)})"
+            hint=f"ROS 1 names types pkg/Name, without the msg/ of ROS 2 (here {_ros1_form(token)})"
             if len(parts) > 2 and "" not in parts
             else None,
         )
