@@ -1,4 +1,4 @@
-"""The package's data files: the jinja2 templates and the manifest's JSON Schema.
+"""The package's data files: the jinja2 templates, the manifest's JSON Schema, ROS#'s catalog.
 
 They live inside the package (``unityscaffold/templates/``, ``unityscaffold/schema/``), so a
 source checkout, an editable install and a wheel all read them the same way: templates through
@@ -12,7 +12,7 @@ from importlib.resources import files
 
 import jinja2
 
-__all__ = ["schema_text", "template_environment", "template_folder"]
+__all__ = ["rossharp_catalog_text", "schema_text", "template_environment", "template_folder"]
 
 _PACKAGE = "unityscaffold"
 _TEMPLATES = "templates"
@@ -51,3 +51,8 @@ def template_folder(folder: str) -> dict[str, bytes]:
 def schema_text() -> str:
     """The shipped ``robot.schema.json`` (``manifest.schema.render_schema`` writes it)."""
     return (files(_PACKAGE) / "schema" / "robot.schema.json").read_text(encoding="utf-8")
+
+
+def rossharp_catalog_text() -> str:
+    """The shipped ``rossharp_catalog.json`` (``scripts/update_rossharp_catalog.py`` writes it)."""
+    return (files(_PACKAGE) / "unity" / "rossharp_catalog.json").read_text(encoding="utf-8")

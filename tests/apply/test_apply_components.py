@@ -47,7 +47,26 @@ components:
     assert again.out.endswith("wrote 0 files, removed 0\n")
 
 
-def test_a_component_may_refer_to_a_generated_script_on_the_first_run(project):
+def test_a_component_may_refer_to_one_a_later_entry_attaches_on_the_first_run(project):
+    run = _apply(
+        project,
+        """\
+topics:
+  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, gameobject: Robot}
+components:
+  - script: JointStatePublisher
+    gameobject: Robot
+    fields: {Topic: /joint_states, JointStateReaders: ["@Robot"]}
+  - script: JointStateReader
+    gameobject: Robot
+""",
+    )
+    assert run.code == 0, run.err
+    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+
+
+def test_a_generated_script_is_no_transform(project):
+    before = (project / "Assets" / "Scenes" / "Main.unity").read_bytes()
     run = _apply(
         project,
         """\
@@ -59,8 +78,10 @@ components:
     fields: {Topic: /twist, SubscribedTransform: "@Robot:OdomSubscriber"}
 """,
     )
-    assert run.code == 0, run.err
-    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+    assert run.code == 2
+    assert "robot.yaml:11:50: error: Robot has no Transform named OdomSubscriber" in run.err
+    assert "components there: Transform, OdomSubscriber, RosConnector, TwistSubscriber" in run.err
+    assert (project / "Assets" / "Scenes" / "Main.unity").read_bytes() == before
 
 
 def test_a_generated_name_that_clashes_with_ros_sharps_scripts_is_refused(project):

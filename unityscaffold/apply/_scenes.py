@@ -15,7 +15,8 @@ from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._lock import LockComponent, LockFile
-from unityscaffold.apply._rossharp import STOCK_SCRIPTS, RosSharp
+from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.apply._typed import check_names, typed_value
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import (
     Component,
@@ -35,12 +36,14 @@ from unityscaffold.unity import (
     SceneDocument,
     ScriptRef,
 )
+from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
 from unityscaffold.unity.values import FieldValue
 
 __all__ = ["ScenePlan", "plan_scenes"]
 
 _TRANSFORM_CLASS_ID = 4
+_RECT_TRANSFORM_CLASS_ID = 224
 
 
 @dataclass(slots=True)
@@ -97,13 +100,16 @@ class _SceneEditor:
         with located_at(where):
             component = self.doc.ensure_component(go, script, fields)
         name = script.class_name or script.guid
+        added = f"add {name} to {path}"
         if not existed:
-            self.plan.edits.append(f"add {name} to {path}")
-        elif self.doc.revision != revision:  # an edit was recorded: a field's value changed
+            self.plan.edits.append(added)
+        elif self.doc.revision != revision and added not in self.plan.edits:
             self.plan.edits.append(f"update {name} on {path}")
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
-        if not existed or (path, script.guid) in self.owned:
+        if not existed:
+            self.owned.add((path, script.guid))
+        if (path, script.guid) in self.owned:
             self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, entry))
         return component
 
@@ -137,6 +143,7 @@ class _Context:
     code: CodePlan
     rossharp: RosSharp
     scripts: dict[str, ScriptInfo]
+    rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
 
     def planned(self, class_name: str) -> ScriptRef | None:
         """A script this plan generates: known by name before its file exists on disk."""
@@ -152,7 +159,12 @@ class _Context:
             if script.guid == guid:
                 return script.view.class_name
         info = self.scripts.get(guid)
-        return info.class_name if info else None
+        return info.class_name if info else self.rossharp_names.get(guid)
+
+    def facts(self, script: ScriptRef) -> CatalogScript | None:
+        """The catalog's facts about a ROS# script (None for any other script)."""
+        name = self.rossharp_names.get(script.guid)
+        return self.rossharp.facts(name) if name else None
 
 
 def _component_script(ctx: _Context, item: Component) -> ScriptRef:
@@ -166,7 +178,10 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
         if found is None and ctx.rossharp.knows(item.script):
             found = ctx.rossharp.script(item.script)
     if found is None:
-        names = sorted({info.class_name for info in ctx.scripts.values()})
+        names = sorted(
+            {info.class_name for info in ctx.scripts.values()}
+            | {s.class_name for s in rossharp_catalog().scripts if s.attachable}
+        )
         close = difflib.get_close_matches(item.script, names, n=3)
         hint = (
             f"did you mean {' or '.join(close)}?"
@@ -210,15 +225,122 @@ def _value(
     return value  # type: ignore[return-value]
 
 
+# Unity's abstract component classes and the built-in classes a field of that type accepts.
+_UNITY_BASES: dict[str, frozenset[str]] = {
+    "Collider": frozenset({"BoxCollider", "SphereCollider", "CapsuleCollider", "MeshCollider"}),
+    "Joint": frozenset(
+        {"HingeJoint", "FixedJoint", "SpringJoint", "CharacterJoint", "ConfigurableJoint"}
+    ),
+    "Renderer": frozenset({"MeshRenderer", "SkinnedMeshRenderer", "LineRenderer"}),
+}
+
+
+def _fits(ctx: _Context, comp: SceneComponent, wanted: str) -> bool:
+    """Whether a component can stand in a field declared as class ``wanted``."""
+    if wanted in ("Transform", "Component"):
+        return comp.class_id in (_TRANSFORM_CLASS_ID, _RECT_TRANSFORM_CLASS_ID) or (
+            wanted == "Component"
+        )
+    if wanted == "RectTransform":
+        return comp.class_id == _RECT_TRANSFORM_CLASS_ID
+    if comp.script is None:
+        return comp.type_name == wanted or comp.type_name in _UNITY_BASES.get(wanted, ())
+    if wanted in ("MonoBehaviour", "Behaviour"):
+        return True
+    name = ctx.class_of(comp.script.guid)
+    if name == wanted:
+        return True
+    facts = ctx.facts(comp.script)
+    return facts is not None and wanted in facts.bases
+
+
+def _typed_reference(
+    ctx: _Context, doc: SceneDocument, value: ObjectPath, declared: str, where: SourceLocation
+) -> ObjectRef:
+    """``@Path`` (or ``@Path:Class``) for a field declared as ``declared``: the GameObject, its
+    transform, or the one component on it that fits."""
+    wanted = declared.rsplit(".", 1)[-1]
+    with located_at(where):
+        go = doc.find_gameobject(value.path)
+    if wanted == "GameObject" and value.component is None:
+        return ObjectRef(go.file_id)
+    comps = doc.components_of(go)
+    fits = [c for c in comps if _fits(ctx, c, wanted)]
+    if value.component is not None:
+        fits = [c for c in fits if value.component in (c.type_name, _label(ctx, c))]
+    if len(fits) == 1:
+        return ObjectRef(fits[0].file_id)
+    there = ", ".join(_label(ctx, c) for c in comps) or "nothing"
+    if not fits:
+        chosen = f" named {value.component}" if value.component else ""
+        raise LocatedError.at(
+            where,
+            f"{value.path} has no {wanted}{chosen} for this field (a {wanted} field)",
+            hint=f"components there: {there}",
+        )
+    raise LocatedError.at(
+        where,
+        f"{value.path} has {len(fits)} components that fit this {wanted} field: "
+        + ", ".join(_label(ctx, c) for c in fits),
+        hint=f"choose one with @{value.path}:<Class>",
+    )
+
+
+def _label(ctx: _Context, comp: SceneComponent) -> str:
+    return (ctx.class_of(comp.script.guid) if comp.script else None) or comp.type_name
+
+
+def _catalog_values(
+    ctx: _Context, doc: SceneDocument, facts: CatalogScript, entry: Component, references: bool
+) -> list[tuple[str, FieldValue]]:
+    """The entry's field values checked against the ROS# class; references only if asked."""
+    enums = rossharp_catalog().enums
+    kinds = {f.name: f.unity for f in facts.fields}
+    values = []
+    for item in entry.fields:
+        kind = kinds[item.name]
+        if "ref:" in kind and not references:
+            continue
+
+        def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
+            return _typed_reference(ctx, doc, path, declared, where)
+
+        values.append(
+            (item.name, typed_value(kind, item.value, item.location, item.name, enums, resolve))
+        )
+    return values
+
+
+def _requirements(
+    editor: _SceneEditor, ctx: _Context, facts: CatalogScript, entry: Component
+) -> None:
+    """Notes for [RequireComponent]s other than RosConnector that are not on the GameObject."""
+    go = editor.doc.find_gameobject(entry.gameobject)
+    comps = editor.doc.components_of(go)
+    for required in facts.requires:
+        if required == "RosConnector" or any(_fits(ctx, c, required) for c in comps):
+            continue
+        editor.plan.edits.append(
+            f"note: {facts.class_name} on {entry.gameobject} requires a {required} there "
+            "([RequireComponent]); Unity adds it only when the component is added in the editor"
+        )
+
+
 def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
     m = ctx.manifest
     owned = {(c.gameobject, c.script) for c in lock.components if c.scene == plan.relative}
     editor = _SceneEditor(plan, doc, owned)
     connector_id = 0
     connector_script = None
-    if m.connector.scene == plan.relative or any(
-        c.scene == plan.relative and c.script in STOCK_SCRIPTS for c in m.components
-    ):
+    scripts = {id(c): _component_script(ctx, c) for c in m.components if c.scene == plan.relative}
+    needs_connector = [
+        c
+        for c in m.components
+        if c.scene == plan.relative
+        and (facts := ctx.facts(scripts[id(c)])) is not None
+        and "RosConnector" in facts.requires
+    ]
+    if m.connector.scene == plan.relative or needs_connector:
         connector_script = ctx.rossharp.script("RosConnector")
     if m.connector.scene == plan.relative:
         assert connector_script is not None
@@ -250,14 +372,18 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             item.locations.of("gameobject"),
             script.entry,
         )
+    deferred = []
     for entry in m.components:
         if entry.scene != plan.relative:
             continue
-        ref = _component_script(ctx, entry)
+        ref = scripts[id(entry)]
+        facts = ctx.facts(ref)
         where = entry.locations.of("gameobject")
         # Created before the fields are read, so they may refer to it.
         editor.gameobject(entry.gameobject, entry.create, where)
-        if entry.script in STOCK_SCRIPTS and connector_script is not None:
+        if facts is not None:
+            check_names(facts.class_name, facts.fields, entry.fields)
+        if entry in needs_connector and connector_script is not None:
             # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
             editor.attach(
                 entry.gameobject,
@@ -267,10 +393,22 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
                 where,
                 f"connector for {entry.script}",
             )
-        values = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in entry.fields]
+        if facts is None:
+            values = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in entry.fields]
+        else:
+            # References are set once every component is there: a field may name one that a
+            # later entry attaches.
+            values = _catalog_values(ctx, doc, facts, entry, references=False)
+            deferred.append((entry, ref, facts, where))
         editor.attach(
             entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
         )
+    for entry, ref, facts, where in deferred:
+        values = _catalog_values(ctx, doc, facts, entry, references=True)
+        editor.attach(
+            entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
+        )
+        _requirements(editor, ctx, facts, entry)
     editor.prune(lock.components, editor.wanted)
 
 
@@ -311,7 +449,7 @@ def plan_scenes(
     lock: LockFile,
 ) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
-    ctx = _Context(manifest, code, rossharp, scripts)
+    ctx = _Context(manifest, code, rossharp, scripts, rossharp.class_names())
     named = _scene_locations(manifest)
     locations = dict(named)
     for old in lock.components:

@@ -124,7 +124,8 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
     salt = project_salt(project)
     scripts = script_index(project)
     code: CodePlan = plan_code(manifest, registry, salt, scripts)
-    scenes = plan_scenes(manifest, code, RosSharp.of(project, scripts), scripts, lock)
+    rossharp = RosSharp.of(project, scripts)
+    scenes = plan_scenes(manifest, code, rossharp, scripts, lock)
 
     generated = list(code.generated)
     conflicts = [] if force else _conflicts(manifest, generated, lock)
@@ -136,7 +137,7 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
 
     pruning = plan_pruning(manifest, lock, {manifest.asset_path(d.path) for d in desired})
     deletions = pruning.deletions
-    notes = user.notes + pruning.notes
+    notes = [*rossharp.notes, *user.notes, *pruning.notes]
     new_lock = LockFile(
         files={
             **pruning.kept_files,

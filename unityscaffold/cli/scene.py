@@ -9,6 +9,7 @@ from typing import Annotated
 import typer
 
 from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.unity.catalog import rossharp_catalog
 from unityscaffold.unity.index import GameObject
 from unityscaffold.unity.project import find_project_root, script_index, script_ref_for_file
 from unityscaffold.unity.scene import GameObjectNotFound, SceneDocument
@@ -27,10 +28,13 @@ _SET_HELP = (
 
 
 def _script_names(scene_path: Path) -> dict[str, str]:
+    """GUID -> class name: the project's scripts, and ROS#'s from its catalog (so that a scene
+    names them before Unity has installed the package)."""
+    names = rossharp_catalog().all_class_names()
     root = find_project_root(scene_path.parent)
     if root is None:
-        return {}
-    return {guid: info.class_name for guid, info in script_index(root).items()}
+        return names
+    return {**names, **{guid: info.class_name for guid, info in script_index(root).items()}}
 
 
 def _load_checked(path: Path) -> SceneDocument:

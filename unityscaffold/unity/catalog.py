@@ -1,0 +1,88 @@
+"""ROS#'s scripts as data: per release, each script's GUID, class, bases and serialized fields.
+
+``rossharp_catalog.json`` beside this module is written by ``scripts/update_rossharp_catalog.py``
+from ROS#'s sources and the ``.cs.meta`` GUIDs of each release. It lets a project name ROS#'s
+stock components before Unity has downloaded the package (no ``Library/``), and lets a manifest's
+field names and values be checked against the C# fields before anything is written.
+
+A field's ``unity`` kind says what Unity stores: ``int``, ``float``, ``bool``, ``string``,
+``enum:<full C# name>``, a Unity struct (``Vector3``, ``Quaternion``, ``Color``...),
+``ref:<class>`` (a reference to a GameObject, a component or a script), or any of these
+followed by ``[]`` (an array or ``List<>``).
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from functools import cache
+
+from unityscaffold.resources import rossharp_catalog_text
+
+__all__ = ["CatalogField", "CatalogScript", "ScriptCatalog", "rossharp_catalog"]
+
+
+@dataclass(frozen=True, slots=True)
+class CatalogField:
+    name: str
+    csharp: str  # the type as written in C#
+    unity: str  # what Unity stores (see the module docstring)
+
+
+@dataclass(frozen=True, slots=True)
+class CatalogScript:
+    class_name: str
+    namespace: str
+    path: str  # inside the package
+    bases: tuple[str, ...]  # nearest first, ending at MonoBehaviour or ScriptableObject
+    attachable: bool  # a concrete, non-generic runtime MonoBehaviour
+    requires: tuple[str, ...]  # [RequireComponent] classes, bases' included
+    fields: tuple[CatalogField, ...]
+    guids: tuple[tuple[str, str], ...]  # (release, GUID)
+
+    def guid(self, release: str) -> str | None:
+        return dict(self.guids).get(release)
+
+    def field(self, name: str) -> CatalogField | None:
+        return next((f for f in self.fields if f.name == name), None)
+
+
+@dataclass(frozen=True, slots=True)
+class ScriptCatalog:
+    package: str
+    sources: str  # the release whose sources gave the classes and fields
+    releases: tuple[str, ...]
+    enums: dict[str, dict[str, int]]  # full C# name -> member -> value
+    scripts: tuple[CatalogScript, ...]
+
+    def named(self, class_name: str) -> CatalogScript | None:
+        return next((s for s in self.scripts if s.class_name == class_name), None)
+
+    def class_names(self, release: str) -> dict[str, str]:
+        """GUID -> class name of every script the release has."""
+        return {g: s.class_name for s in self.scripts if (g := s.guid(release)) is not None}
+
+    def all_class_names(self) -> dict[str, str]:
+        """GUID -> class name over every release (GUIDs differ between some releases)."""
+        return {guid: s.class_name for s in self.scripts for _, guid in s.guids}
+
+
+@cache
+def rossharp_catalog() -> ScriptCatalog:
+    data = json.loads(rossharp_catalog_text())
+    scripts = tuple(
+        CatalogScript(
+            class_name=s["class"],
+            namespace=s["namespace"],
+            path=s["path"],
+            bases=tuple(s["bases"]),
+            attachable=s["attachable"],
+            requires=tuple(s["requires"]),
+            fields=tuple(CatalogField(f["name"], f["type"], f["unity"]) for f in s["fields"]),
+            guids=tuple(s["guids"].items()),
+        )
+        for s in data["scripts"]
+    )
+    return ScriptCatalog(
+        data["package"], data["sources"], tuple(data["releases"]), data["enums"], scripts
+    )
