@@ -6,6 +6,7 @@ changes and scene edits; nothing is written here (see ``apply.run``).
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -96,13 +97,14 @@ def _check_inside(project: Path, paths: list[Path]) -> None:
     the output folder (or a stale lock) could still lead elsewhere.
     """
     root = project.resolve()
-    resolved: dict[Path, Path] = {}
+    inside = str(root).rstrip(os.sep) + os.sep
+    resolved: dict[Path, str] = {}
     for path in paths:
         folder = resolved.get(path.parent)
         if folder is None:
-            folder = resolved[path.parent] = path.parent.resolve()
-        real = folder / path.name
-        if root not in real.parents:
+            folder = resolved[path.parent] = str(path.parent.resolve())
+        if not (folder + os.sep).startswith(inside):
+            real = Path(folder) / path.name
             raise UserError(
                 f"refusing to touch {path}: it resolves to {real}, outside the "
                 f"Unity project {root}",

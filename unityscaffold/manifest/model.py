@@ -8,6 +8,7 @@ found later (an unknown type, a missing GameObject) is still reported at ``robot
 from __future__ import annotations
 
 import enum
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -239,6 +240,9 @@ class Manifest:
 
     def asset_path(self, path: Path) -> str:
         """A path inside the project as Unity names assets: relative to the root, POSIX style."""
+        text, root = str(path), str(self.project_root)
+        if text.startswith(root) and text[len(root) : len(root) + 1] == os.sep:
+            return text[len(root) + 1 :].replace(os.sep, "/")  # the usual case, without pathlib
         return path.relative_to(self.project_root).as_posix()
 
     def scene_path(self, scene: str) -> Path:

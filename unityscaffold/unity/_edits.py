@@ -246,6 +246,10 @@ def set_fields(docs: Documents, doc: Doc, fields: Sequence[tuple[str, FieldValue
         changed = True
     if changed:
         docs.touch(doc)
+        if "m_Script" in order:  # the owner's index of scripts (SceneDocument) is stale
+            owner = docs.get(F.ref_value(doc, "m_GameObject") or 0)
+            if owner is not None:
+                owner.cache.clear()
     return changed
 
 

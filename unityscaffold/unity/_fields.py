@@ -8,6 +8,7 @@ multi-line quoted scalar. Results are cached on the ``Doc`` and dropped when its
 from __future__ import annotations
 
 import re
+from typing import cast
 
 import yaml
 
@@ -116,12 +117,14 @@ def ref_value(doc: Doc, key: str) -> int | None:
 
 def list_refs(doc: Doc, key: str) -> list[int]:
     """fileIDs in an indentless list: ``- {fileID: N}``, ``- component: {…}`` or ``- 4: {…}``."""
-    text = doc.text
-    at = _key_line(text, key)
-    if at < 0 or text[at] != "\n":
-        return []
-    block = _ITEMS_AT.match(text, at + 1)
-    return [int(m) for m in _ITEM_REF_RE.findall(block.group(0))] if block else []
+    cached = cast("tuple[int, ...] | None", doc.cache.get("refs " + key))
+    if cached is None:
+        text = doc.text
+        at = _key_line(text, key)
+        block = _ITEMS_AT.match(text, at + 1) if at >= 0 and text[at] == "\n" else None
+        found = tuple(int(m) for m in _ITEM_REF_RE.findall(block.group(0))) if block else ()
+        doc.cache["refs " + key] = cached = found
+    return list(cached)
 
 
 def script_of(doc: Doc) -> tuple[int, str, int] | None:

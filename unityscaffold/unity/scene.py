@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
+from typing import cast
 
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import write_if_changed
@@ -182,14 +183,23 @@ class SceneDocument:
         self, go: GameObject | str, script_guid: str, script_file_id: int = MONOSCRIPT_FILE_ID
     ) -> SceneComponent | None:
         """The first component of ``go`` running that script, or None."""
-        for file_id in self._go(go).component_ids:
-            doc = self._docs.get(file_id)
-            if doc is None or doc.class_id != 114:
-                continue
-            script = F.script_of(doc)
-            if script is not None and script[1] == script_guid and script[0] == script_file_id:
-                return self.component(file_id)
-        return None
+        target = self._go(go)
+        go_doc = self._docs.get(target.file_id)
+        # Indexed on the GameObject's document: its cache is dropped when its text (the
+        # m_Component list) changes, and _edits drops it when a component's m_Script does.
+        cached = go_doc.cache.get("scripts") if go_doc is not None else None
+        index = cast("dict[tuple[int, str], int] | None", cached)
+        if index is None:
+            index = {}
+            for file_id in target.component_ids:
+                doc = self._docs.get(file_id)
+                script = F.script_of(doc) if doc is not None and doc.class_id == 114 else None
+                if script is not None:
+                    index.setdefault((script[0], script[1]), file_id)
+            if go_doc is not None:
+                go_doc.cache["scripts"] = index
+        found = index.get((script_file_id, script_guid))
+        return self.component(found) if found is not None and found in self._docs else None
 
     def field(self, component: SceneComponent | int, name: str) -> object:
         """A top-level field read with a string-only YAML loader (None when absent)."""
