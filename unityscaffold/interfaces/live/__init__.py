@@ -59,7 +59,7 @@ def discover(
     progress: Progress | None = None,
 ) -> Discovery:
     """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``."""
-    from unityscaffold.interfaces.live import _bag, _master, _rosbridge
+    from unityscaffold.interfaces.live import _master, _rosbridge
 
     chosen = [s for s in (master_url, rosbridge_url, bag) if s is not None]
     if len(chosen) != 1:
@@ -72,4 +72,19 @@ def discover(
             rosbridge_url, timeout=timeout, names=names, dialect=dialect, progress=progress
         )
     assert bag is not None
-    return _bag.discover_bag(Path(bag), names=names)
+    return _discover_bag(Path(bag), names)
+
+
+def _discover_bag(bag: Path, names: NameFilter) -> Discovery:
+    """The bag reader; it needs ``rosbags``, an optional extra, so it is imported only here."""
+    try:
+        from unityscaffold.interfaces.live import _bag
+    except ModuleNotFoundError as exc:
+        if exc.name is None or exc.name.split(".")[0] != "rosbags":
+            raise
+        raise UserError(
+            "reading a recording needs the Python package rosbags, which is not installed",
+            hint="install unityscaffold with its `bag` extra: "
+            "python3 -m pip install 'unityscaffold[bag]' (from a checkout: '.[bag]')",
+        ) from None
+    return _bag.discover_bag(bag, names=names)
