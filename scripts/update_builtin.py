@@ -21,6 +21,11 @@ ROS1_PACKAGES = (
     "topic_tools trajectory_msgs visualization_msgs"
 ).split()
 ROS2_EXCLUDED = {"test_msgs"}  # a grammar torture set, not something robots use
+# Jazzy's tf2_msgs has no PyPI wheel, and /tf needs its TFMessage. That file's text is the same
+# in ROS 1 and ROS 2 (geometry2's tf2_msgs/msg/TFMessage.msg, one line), so it is copied from
+# Debian's ROS 1 package. The package's other files differ between the two (TF2Error's
+# constants were renamed in ROS 2) and are left out.
+ROS2_FROM_ROS1 = {"tf2_msgs": ("msg/TFMessage.msg",)}
 
 
 def copy_package(source: Path, target: Path) -> int:
@@ -51,6 +56,14 @@ def main() -> int:
             continue
         if any((source / kind).is_dir() for kind in ("msg", "srv", "action")):
             total += copy_package(source, TARGET / "ros2" / source.name)
+    for package, files in ROS2_FROM_ROS1.items():
+        if (TARGET / "ros2" / package).exists():
+            continue  # a wheel brought the package itself
+        for relative in files:
+            dest = TARGET / "ros2" / package / relative
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(Path("/usr/share") / package / relative, dest)
+            total += 1
     print(f"copied {total} definition files into {TARGET}")
     return 0
 

@@ -118,14 +118,123 @@ def test_unknown_type_suggests_close_names():
     run = run_cli("msgs", "show", "geometry_msgs/Twst", "--ros", "2", "--no-env")
     assert run.code == 2
     assert "unknown ROS 2 type 'geometry_msgs/Twst'" in run.err
-    assert "did you mean geometry_msgs/Twist" in run.err
+    assert "did you mean geometry_msgs/msg/Twist" in run.err
     assert "built-in" in run.err
 
 
-def test_ambiguous_name_asks_for_the_kind():
-    run = run_cli("msgs", "show", "nav_msgs/GetMap", "--ros", "1", "--no-env")
+def test_ros1_pkg_name_is_the_msg_or_srv_as_rossrv_reads_it_and_pkg_action_name_the_action():
+    # nav_msgs has GetMap.srv and GetMap.action; in ROS 1 only the srv is a type named GetMap.
+    for name, kind in (
+        ("nav_msgs/GetMap", "srv"),
+        ("nav_msgs/srv/GetMap", "srv"),
+        ("nav_msgs/action/GetMap", "action"),
+        ("nav_msgs/GetMapGoal", "msg"),
+    ):
+        run = run_cli("msgs", "show", name, "--ros", "1", "--no-env", "--json")
+        assert run.code == 0, run.err
+        assert json.loads(run.out)[0]["kind"] == kind
+
+
+def _hinted(err: str) -> list[str]:
+    """The type names a hint proposes ('write A or B', 'did you mean A or B?')."""
+    hint = err.split("hint:", 1)[1].split("looked")[0]
+    words = hint.replace("?", " ").replace(",", " ").replace(";", " ").split()
+    return [w for w in words if w.count("/") in (1, 2) and not w.startswith("/")]
+
+
+def _show(tree, *names, ros):
+    return run_cli("msgs", "show", *names, "--ros", ros, "--no-env", "--path", str(tree))
+
+
+AMBIGUOUS = {
+    "ws/pkg_msgs/msg/Thing.msg": "int32 a\n",
+    "ws/pkg_msgs/srv/Thing.srv": "int32 a\n---\nint32 b\n",
+    "ws/pkg_msgs/action/Patrol.action": "int32 a\n---\nint32 b\n---\nint32 c\n",
+    "ws/pkg_msgs/msg/RobotState.msg": "int32 a\n",
+}
+
+
+@pytest.mark.parametrize("ros", ["1", "2"])
+def test_a_name_of_two_kinds_gets_a_hint_that_works_when_followed(ros, tmp_path):
+    build_tree(tmp_path, AMBIGUOUS)
+    run = _show(tmp_path / "ws", "pkg_msgs/Thing", ros=ros)
     assert run.code == 2
-    assert "nav_msgs/srv/GetMap or nav_msgs/action/GetMap" in run.err
+    assert "'pkg_msgs/Thing' names both a msg and a srv" in run.err
+    hinted = _hinted(run.err)
+    assert hinted == ["pkg_msgs/msg/Thing", "pkg_msgs/srv/Thing"]
+    for name in hinted:
+        assert _show(tmp_path / "ws", name, ros=ros).code == 0
+
+
+def test_a_ros1_action_is_named_pkg_action_name_or_pkg_name_when_nothing_else_is(tmp_path):
+    build_tree(tmp_path, AMBIGUOUS)
+    for name in ("pkg_msgs/action/Patrol", "pkg_msgs/Patrol", "pkg_msgs/PatrolGoal"):
+        assert _show(tmp_path / "ws", name, ros="1").code == 0, name
+
+
+@pytest.mark.parametrize("ros", ["1", "2"])
+def test_suggestions_come_from_the_same_package_first_and_work_when_followed(ros, tmp_path):
+    build_tree(tmp_path, AMBIGUOUS)
+    for typo in ("pkg_msgs/RobotStat", "pkg_msgs/Patro", "pkg_msgs/Thin"):
+        run = _show(tmp_path / "ws", typo, ros=ros)
+        assert run.code == 2, typo
+        hinted = _hinted(run.err)
+        assert hinted and hinted[0].startswith("pkg_msgs/"), run.err
+        for name in hinted:
+            assert _show(tmp_path / "ws", name, ros=ros).code == 0, (typo, name, run.err)
+
+
+def test_unknown_types_are_reported_all_at_once_and_a_missing_package_is_named():
+    run = run_cli(
+        "msgs",
+        "show",
+        "nope_msgs/msg/A",
+        "geometry_msgs/msg/Pointt",
+        "other_msgs/msg/B",
+        "std_msgs/msg/String",
+        "--ros",
+        "2",
+        "--no-env",
+    )
+    assert run.code == 2
+    assert "3 types are unknown:" in run.err
+    assert "unknown ROS 2 type 'nope_msgs/msg/A': no package 'nope_msgs' was found" in run.err
+    assert "unknown ROS 2 type 'other_msgs/msg/B': no package 'other_msgs' was found" in run.err
+    assert "did you mean geometry_msgs/msg/Point or" in run.err
+    assert "hint: looked in: " in run.err and "(built-in)" in run.err
+
+
+def test_a_single_missing_package_says_where_packages_are_looked_for():
+    run = run_cli("msgs", "show", "nope_msgs/msg/A", "--ros", "2", "--no-env")
+    assert run.code == 2
+    assert "no package 'nope_msgs' was found" in run.err
+    assert "hint: packages are looked for in: " in run.err
+
+
+def test_msgs_gen_reports_every_unknown_type_too(tmp_path):
+    run = run_cli(
+        "msgs",
+        "gen",
+        "nope_msgs/A",
+        "nope_msgs/B",
+        "--ros",
+        "1",
+        "--no-env",
+        "--out",
+        str(tmp_path / "out"),
+    )
+    assert run.code == 2
+    assert "2 types are unknown:" in run.err
+    assert not (tmp_path / "out").exists()
+
+
+def test_tf2_msgs_tfmessage_is_built_in_for_ros2_with_jazzys_type_hash():
+    run = run_cli("msgs", "show", "tf2_msgs/msg/TFMessage", "--ros", "2", "--no-env")
+    assert run.code == 0, run.err
+    # The hash a Jazzy system reports for /tf (ros2 topic info -v, rosbag2 metadata).
+    expected = "RIHS01_e369d0f05a23ae52508854b66f6aa0437f3449d652e8cbf22d5abe85d020f087"
+    assert f"type hash:  {expected}" in run.out
+    assert "(built-in)" in run.out
 
 
 @pytest.mark.parametrize("ros", ["1", "2"])

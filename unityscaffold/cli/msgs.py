@@ -17,6 +17,7 @@ from unityscaffold.cli._options import (
 )
 from unityscaffold.errors import Exit, LocatedError
 from unityscaffold.interfaces.describe import Describer
+from unityscaffold.interfaces.model import Interface
 from unityscaffold.interfaces.registry import Registry
 
 app = typer.Typer(
@@ -109,8 +110,9 @@ def _list_live(url: str, timeout: float, as_json: bool) -> None:
         typer.echo(f"{topic:<{width}}  {type_name}")
 
 
-def _show_text(describer: Describer, data: dict[str, Any], registry: Registry) -> None:
-    interface = registry.get(data["type"])
+def _show_text(
+    describer: Describer, interface: Interface, data: dict[str, Any], registry: Registry
+) -> None:
     typer.echo(f"{data['type']}  ({data['kind']}, {registry.dialect.label})")
     file = registry.file_of(interface)
     origin = f" ({file.origin})" if file else ""
@@ -158,14 +160,15 @@ def show(
     """
     registry = Registry.load(dialect_of(ros), path, use_environment=not no_env)
     describer = Describer(registry)
-    described = [describer.describe(registry.get(name)) for name in types]
+    interfaces = registry.get_all(types)
+    described = [describer.describe(interface) for interface in interfaces]
     if as_json:
         _print_json(described)
         return
-    for index, data in enumerate(described):
+    for index, (interface, data) in enumerate(zip(interfaces, described, strict=True)):
         if index:
             typer.echo()
-        _show_text(describer, data, registry)
+        _show_text(describer, interface, data, registry)
 
 
 from unityscaffold.cli import msgs_gen  # noqa: E402

@@ -55,8 +55,9 @@ def resolve_roots(registry: Registry, names: list[str], everything: bool) -> lis
     if not names:
         raise UserError("no types given", hint="name types (pkg/Type) or packages, or use --all")
     roots: list[Interface] = []
+    typed = iter(registry.get_all([name for name in names if "/" in name]))
     for name in names:
-        roots += [registry.get(name)] if "/" in name else _package_interfaces(registry, name)
+        roots += [next(typed)] if "/" in name else _package_interfaces(registry, name)
     return roots
 
 

@@ -44,7 +44,12 @@ _PARSERS: dict[Dialect, dict[InterfaceKind, _Parser]] = {
 
 
 class TypeNotFound(UserError):
-    """A type name that no search root defines."""
+    """A type name that no search root defines; ``advice`` is the hint without where the
+    search looked (so several can share that)."""
+
+    def __init__(self, message: str, *, hint: str | None = None, advice: str = "") -> None:
+        super().__init__(message, hint=hint)
+        self.advice = advice
 
 
 @dataclass(frozen=True, slots=True)
@@ -111,6 +116,9 @@ class Registry:
         """The file that defines ``interface`` (for a service half: the service's file)."""
         owner = interface.owner if isinstance(interface, MessageSpec) and interface.owner else None
         if owner is not None:
+            if self.dialect is Dialect.ROS1:  # pkg/Name: the kind is the part's subfolder
+                package, name = owner.split("/")
+                owner = f"{package}/{interface.subfolder}/{name}"
             found = self.find(owner)
             if found is not None and found is not interface:
                 return self.file_of(found)
@@ -159,7 +167,13 @@ class Registry:
         return self._files.get(_Key(kind, package, name))
 
     def find(self, name: str) -> Interface | None:
-        """The message, service or action called ``name``, in any form users type."""
+        """The message, service or action called ``name``, in any form users type.
+
+        ``pkg/kind/Name`` names one file. ``pkg/Name`` names the one message, service or action
+        of that name, except that in ROS 1 a message or service wins over an action (as
+        ``rosmsg`` and ``rossrv`` read names: there an action is not a type, its messages
+        ``pkg/NameGoal``, … are), so ``nav_msgs/GetMap`` is the service.
+        """
         parts = name.strip().split("/")
         if len(parts) == 3 and parts[1] in {k.value for k in InterfaceKind}:
             package, kind, short = parts[0], InterfaceKind(parts[1]), parts[2]
@@ -168,7 +182,7 @@ class Registry:
             return self._find_in(package, short, (kind,))
         if len(parts) != 2 or not all(parts):
             return None
-        kinds = [k for k in InterfaceKind if self._file(k, parts[0], parts[1]) is not None]
+        kinds = self._short_form_kinds(*parts)
         if len(kinds) > 1:
             spelled = " or ".join(f"{parts[0]}/{k.value}/{parts[1]}" for k in kinds)
             raise UserError(
@@ -228,22 +242,74 @@ class Registry:
         return found
 
     def known_names(self) -> list[str]:
-        names = set()
-        for key in self._files:
-            names.add(f"{key.package}/{key.name}")
-            if self.dialect is Dialect.ROS2:
-                names.add(f"{key.package}/{key.kind.value}/{key.name}")
-        return sorted(names)
+        """Every type's name in a form ``find`` resolves to it (and to nothing else)."""
+        return sorted(self._spelled(key) for key in self._files)
+
+    def _spelled(self, key: _Key) -> str:
+        short = f"{key.package}/{key.name}"
+        if self.dialect is Dialect.ROS2:
+            return f"{key.package}/{key.kind.value}/{key.name}"
+        if self._short_form_kinds(key.package, key.name) != [key.kind]:
+            return f"{key.package}/{key.kind.value}/{key.name}"
+        return short
+
+    def _short_form_kinds(self, package: str, name: str) -> list[InterfaceKind]:
+        """The kinds ``pkg/Name`` may mean (``find``): one, or several when it is ambiguous."""
+        kinds = [k for k in InterfaceKind if self._file(k, package, name) is not None]
+        if self.dialect is Dialect.ROS1 and len(kinds) > 1:
+            kinds = [k for k in kinds if k is not InterfaceKind.ACTION]
+        return kinds
+
+    def suggestions(self, name: str) -> list[str]:
+        """Known names close to ``name``: those of its own package first."""
+        parts = name.strip().split("/")
+        package, short = parts[0], parts[-1]
+        own = [k for k in self._files if k.package == package]
+        close = difflib.get_close_matches(short, sorted({k.name for k in own}), n=3, cutoff=0.6)
+        found = [self._spelled(k) for c in close for k in sorted(own, key=str) if k.name == c]
+        others = difflib.get_close_matches(name, self.known_names(), n=3, cutoff=0.6)
+        return list(dict.fromkeys([*found, *others]))[:3]
+
+    def looked_in(self) -> str:
+        return ", ".join(f"{r.path} ({r.origin})" for r in self.roots)
 
     def _not_found(self, name: str, used_at: SourceLocation | None, note: str = "") -> UserError:
-        close = difflib.get_close_matches(name, self.known_names(), n=3, cutoff=0.6)
-        looked = ", ".join(f"{r.path} ({r.origin})" for r in self.roots)
-        hint = f"did you mean {' or '.join(close)}? " if close else ""
-        hint += f"looked in: {looked}"
+        parts = name.strip().split("/")
         message = note or f"unknown {self.dialect.label} type '{name}'"
+        advice = ""
+        looked = f"looked in: {self.looked_in()}"
+        if not note and len(parts) in (2, 3) and parts[0] not in self.packages():
+            message += f": no package '{parts[0]}' was found"
+            packages = difflib.get_close_matches(parts[0], self.packages(), n=3, cutoff=0.85)
+            advice = f"did you mean package {' or '.join(packages)}?" if packages else ""
+            looked = f"packages are looked for in: {self.looked_in()}"
+        else:
+            close = self.suggestions(name)
+            advice = f"did you mean {' or '.join(close)}?" if close else ""
+        hint = f"{advice} {looked}" if advice else looked
         if used_at is not None:
             return LocatedError.at(used_at, message, hint=hint)
-        return TypeNotFound(message, hint=hint)
+        return TypeNotFound(message, hint=hint, advice=advice)
+
+    def get_all(self, names: Iterable[str]) -> list[Interface]:
+        """``get`` for each name; unknown names are all reported in one error."""
+        found: list[Interface] = []
+        missing: list[TypeNotFound] = []
+        for name in names:
+            try:
+                found.append(self.get(name))
+            except TypeNotFound as error:
+                missing.append(error)
+        if len(missing) == 1:
+            raise missing[0]
+        if missing:
+            lines = [f"{len(missing)} types are unknown:"]
+            for unknown in missing:
+                lines.append(f"  {unknown.message}")
+                if unknown.advice:
+                    lines.append(f"    {unknown.advice}")
+            raise TypeNotFound("\n".join(lines), hint=f"looked in: {self.looked_in()}")
+        return found
 
     # --- dependencies ---------------------------------------------------------------------
 
