@@ -286,3 +286,13 @@ def test_deep_nesting_and_alias_bombs_are_user_errors() -> None:
     ]:
         with pytest.raises(LocatedError):
             parse_manifest(text, PATH)
+
+
+def test_a_tagged_mapping_key_is_refused_at_its_position() -> None:
+    # Found by the fuzz test above: the loader accepted a key carrying a local tag.
+    text = (
+        "version: 1\nros: 2\ncomponents:\n  - {script: A, gameobject: B, fields: {T: /,!x, Y: 1}}\n"
+    )
+    outcome = _check(text, None)
+    assert isinstance(outcome, LocatedError)
+    assert outcome.diagnostics[0].message == "unsupported YAML tag '!x,'"

@@ -218,6 +218,12 @@ class _Converter:
                 continue
             if not isinstance(key_node, ScalarNode):
                 raise self.fail(key_node, "a mapping key must be plain text")
+            if _tag(key_node) not in _SCALAR_TAGS:
+                raise self.fail(
+                    key_node,
+                    f"unsupported YAML tag {_tag(key_node)!r}",
+                    hint="the manifest uses plain YAML values; remove the tag",
+                )
             key = str(key_node.value)
             value = self.convert(value_node)
             if _is_empty(value_node):
