@@ -171,6 +171,9 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
     where = item.locations.of("script")
     with located_at(where):
         if item.script.endswith(".cs"):
+            listed = next((i for i in ctx.scripts.values() if i.path == item.script), None)
+            if listed is not None:
+                return ScriptRef(listed.guid, class_name=listed.class_name)
             return script_ref_for_file(ctx.manifest.project_root / item.script)
         found = ctx.planned(item.script) or find_script(
             ctx.manifest.project_root, item.script, index=ctx.scripts

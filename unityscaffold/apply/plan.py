@@ -15,6 +15,7 @@ from unityscaffold.apply._lock import LockFile, lock_path, recorded, sha256
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
+from unityscaffold.apply._scriptmetas import plan_script_metas
 from unityscaffold.apply._settings import with_ros_define
 from unityscaffold.apply._userfiles import plan_user_files
 from unityscaffold.errors import LocatedError, UserError
@@ -124,7 +125,8 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
         )
     lock = LockFile.read(lock_path(manifest.path))
     salt = project_salt(project)
-    scripts = script_index(project)
+    metas = plan_script_metas(manifest, script_index(project), salt)
+    scripts = metas.scripts
     code: CodePlan = plan_code(manifest, registry, salt, scripts)
     rossharp = RosSharp.of(project, scripts)
     scenes = plan_scenes(manifest, code, rossharp, scripts, lock)
@@ -134,7 +136,7 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
     user = plan_user_files(manifest, code, lock)
     user_paths = {d.path for d in user.desired}
     desired = generated + [d for d in code.created_once if d.path not in user_paths]
-    desired += user.desired + _settings_change(manifest)
+    desired += user.desired + metas.desired + _settings_change(manifest)
     desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
 
     pruning = plan_pruning(manifest, lock, {manifest.asset_path(d.path) for d in desired})
