@@ -42,19 +42,28 @@ class Compiled:
 
 
 def compile_cs(
-    mcs: str, sources: list[Path], out: Path, *, ros2: bool, references: tuple[Path, ...] = ()
+    mcs: str,
+    sources: list[Path],
+    out: Path,
+    *,
+    ros2: bool,
+    references: tuple[Path, ...] = (),
+    defines: tuple[str, ...] = (),
 ) -> Compiled:
     args = [mcs, *MCS_FLAGS, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
     if ros2:
         args.append("-define:ROS2")
+    args += [f"-define:{name}" for name in defines]
     args += [f"-r:{r}" for r in references]
     args += [str(s) for s in sources]
     done = subprocess.run(args, capture_output=True, text=True, check=False, timeout=300)
     return Compiled(done.returncode, done.stdout + done.stderr, out)
 
 
-def _unity_engine(mcs: str, out: Path) -> Path:
-    compiled = compile_cs(mcs, [UNITY_STUBS[0]], out / "UnityEngine.dll", ros2=False)
+def _unity_engine(mcs: str, out: Path, defines: tuple[str, ...] = ()) -> Path:
+    compiled = compile_cs(
+        mcs, [UNITY_STUBS[0]], out / "UnityEngine.dll", ros2=False, defines=defines
+    )
     compiled.assert_clean()
     return compiled.assembly
 
@@ -89,15 +98,24 @@ def _runtime_assembly(mcs: str, manifest_path: Path, out: Path, engine: Path) ->
     return compiled.assembly
 
 
-def compile_applied_project(mcs: str, manifest_path: Path, out: Path, *, ros2: bool) -> None:
-    """Compile as Unity would: UnityEngine, ROS#'s runtime, then the project's scripts."""
+def compile_applied_project(
+    mcs: str, manifest_path: Path, out: Path, *, ros2: bool, defines: tuple[str, ...] = ()
+) -> None:
+    """Compile as Unity would: UnityEngine, ROS#'s runtime, then the project's scripts.
+
+    ``defines`` are Unity's version defines, such as ``UNITY_2023_1_OR_NEWER``."""
     out.mkdir(parents=True, exist_ok=True)
-    engine = _unity_engine(mcs, out)
+    engine = _unity_engine(mcs, out, defines)
     runtime = _runtime_assembly(mcs, manifest_path, out, engine)
     project = load_manifest(manifest_path).output_dir
     sources = sorted(project.rglob("*.cs"))
     assert any(p.name.endswith(".User.cs") for p in sources)
     compiled = compile_cs(
-        mcs, sources, out / "Assembly-CSharp.dll", ros2=ros2, references=(engine, runtime)
+        mcs,
+        sources,
+        out / "Assembly-CSharp.dll",
+        ros2=ros2,
+        references=(engine, runtime),
+        defines=defines,
     )
     compiled.assert_clean()

@@ -15,6 +15,17 @@ def test_the_sample_projects_generated_code_compiles(mcs, tmp_path):
     compile_applied_project(mcs, REPO / "sample_project" / "robot.yaml", tmp_path, ros2=False)
 
 
+def test_the_generated_scripts_avoid_apis_unity_2023_made_obsolete(mcs, tmp_path):
+    # The stub UnityEngine makes FindObjectOfType an error under UNITY_2023_1_OR_NEWER.
+    compile_applied_project(
+        mcs,
+        REPO / "sample_project" / "robot.yaml",
+        tmp_path,
+        ros2=False,
+        defines=("UNITY_2023_1_OR_NEWER",),
+    )
+
+
 ROS2_MANIFEST = """\
 version: 1
 ros: 2

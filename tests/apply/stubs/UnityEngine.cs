@@ -7,7 +7,12 @@ namespace UnityEngine
     public class Object
     {
         public string name { get; set; }
+#if UNITY_2023_1_OR_NEWER
+        // Obsolete since Unity 2023.1; an error here makes the test catch a call to it.
+        [System.Obsolete("use FindFirstObjectByType or FindAnyObjectByType", true)]
+#endif
         public static T FindObjectOfType<T>() where T : Object { return null; }
+        public static T FindAnyObjectByType<T>() where T : Object { return null; }
         public static implicit operator bool(Object exists) { return !ReferenceEquals(exists, null); }
     }
 

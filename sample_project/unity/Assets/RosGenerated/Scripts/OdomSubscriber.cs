@@ -94,7 +94,11 @@ namespace RosGenerated
             }
             if (Connector == null)
             {
+#if UNITY_2023_1_OR_NEWER
+                Connector = FindAnyObjectByType<RosConnector>();
+#else
                 Connector = FindObjectOfType<RosConnector>();
+#endif
             }
             if (Connector == null)
             {
