@@ -3,7 +3,9 @@
 The files come from the package's ``templates/unity_project/`` (``*.jinja`` ones rendered),
 the starter manifest from ``manifest.starter_manifest``. The project's ``productGUID`` (which
 also salts the GUIDs of generated ``.meta`` files) is derived from the project's folder name,
-so the same command gives the same files.
+so the same command gives the same files. The scene, its folder and
+``ProjectSettings/EditorBuildSettings.asset`` (which lists the scene for builds) share GUIDs
+derived from it, so Unity finds ``.meta`` files on first open instead of making random ones.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from unityscaffold.errors import UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.manifest import starter_manifest
 from unityscaffold.resources import template_environment, template_folder
+from unityscaffold.unity.meta import folder_meta, guid_for
 
 __all__ = ["MAIN_SCENE", "init_project"]
 
@@ -30,12 +33,35 @@ def _template_files(context: dict[str, str]) -> list[tuple[str, bytes]]:
         if source.rsplit("/", 1)[-1] == "README.md":
             continue
         relative = _RENAMES.get(source, source)
+        if relative == "ProjectSettings/EditorBuildSettings.asset.jinja":
+            continue  # rendered with the scene's GUID by _scene_files
         if relative.endswith(".jinja"):
             template = template_environment().get_template(f"{_TEMPLATE_ROOT}/{source}")
             files.append((relative[: -len(".jinja")], template.render(**context).encode("utf-8")))
         else:
             files.append((relative, data))
     return files
+
+
+def _scene_files(salt: str) -> list[tuple[str, bytes]]:
+    """The ``.meta`` files of the scene and its folder, and the build settings listing it."""
+    folder = MAIN_SCENE.rsplit("/", 1)[0]
+    scene_guid = guid_for(salt, MAIN_SCENE)
+    scene_meta = (
+        f"fileFormatVersion: 2\nguid: {scene_guid}\nDefaultImporter:\n  externalObjects: {{}}\n"
+        "  userData: \n  assetBundleName: \n  assetBundleVariant: \n"
+    )
+    build_settings = template_environment().get_template(
+        f"{_TEMPLATE_ROOT}/ProjectSettings/EditorBuildSettings.asset.jinja"
+    )
+    return [
+        (f"{folder}.meta", folder_meta(guid_for(salt, folder)).encode("utf-8")),
+        (f"{MAIN_SCENE}.meta", scene_meta.encode("utf-8")),
+        (
+            "ProjectSettings/EditorBuildSettings.asset",
+            build_settings.render(scene=MAIN_SCENE, guid=scene_guid).encode("utf-8"),
+        ),
+    ]
 
 
 def init_project(directory: Path, ros: int, *, force: bool = False) -> list[FileChange]:
@@ -56,7 +82,7 @@ def init_project(directory: Path, ros: int, *, force: bool = False) -> list[File
     }
     desired = [
         DesiredFile(directory / rel, data, create_only=True)
-        for rel, data in _template_files(context)
+        for rel, data in _template_files(context) + _scene_files(context["product_guid"])
     ]
     manifest = starter_manifest(ros, MAIN_SCENE, schema=None)
     desired.append(

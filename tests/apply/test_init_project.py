@@ -1,0 +1,73 @@
+"""``scaffold init`` writes a Unity project that opens clean: its scene and scene folder have
+``.meta`` files (with GUIDs derived from the project, not random ones Unity would make on first
+open), the build settings list the scene, the ``.gitignore`` covers what Unity, IDEs and crashes
+leave behind, and for ROS 2 every build target group gets the ``ROS2`` define."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import yaml
+from helpers import run_cli
+
+from unityscaffold.unity.meta import guid_for, read_meta_guid
+from unityscaffold.unity.project import project_salt
+
+
+def _init(tmp_path: Path, ros: str = "2", name: str = "robot") -> Path:
+    project = tmp_path / name
+    run = run_cli("init", str(project), "--ros", ros)
+    assert run.code == 0, run.err
+    return project
+
+
+def _unity_yaml(path: Path) -> dict[str, object]:
+    """One-document Unity YAML without its ``%TAG``/``--- !u!`` header lines."""
+    body = [line for line in path.read_text().splitlines() if not line.startswith(("%", "---"))]
+    return yaml.safe_load("\n".join(body))
+
+
+def test_the_scene_and_its_folder_have_metas_with_project_derived_guids(tmp_path):
+    project = _init(tmp_path)
+    salt = project_salt(project)
+    scene_meta = project / "Assets/Scenes/Main.unity.meta"
+    folder_meta = project / "Assets/Scenes.meta"
+    assert read_meta_guid(scene_meta) == guid_for(salt, "Assets/Scenes/Main.unity")
+    assert read_meta_guid(folder_meta) == guid_for(salt, "Assets/Scenes")
+    assert "DefaultImporter:" in scene_meta.read_text()
+    assert "folderAsset: yes" in folder_meta.read_text()
+    other = _init(tmp_path, name="rover")  # another project name: other GUIDs
+    assert read_meta_guid(other / "Assets/Scenes/Main.unity.meta") != read_meta_guid(scene_meta)
+
+
+def test_the_build_settings_list_the_scene_by_path_and_guid(tmp_path):
+    project = _init(tmp_path)
+    settings = _unity_yaml(project / "ProjectSettings/EditorBuildSettings.asset")
+    [scene] = settings["EditorBuildSettings"]["m_Scenes"]
+    assert scene == {
+        "enabled": 1,
+        "path": "Assets/Scenes/Main.unity",
+        "guid": read_meta_guid(project / "Assets/Scenes/Main.unity.meta"),
+    }
+
+
+def test_the_gitignore_covers_unity_ide_and_crash_files(tmp_path):
+    lines = set((_init(tmp_path) / ".gitignore").read_text().splitlines())
+    for pattern in (
+        "/[Ll]ibrary/", "/[Tt]emp/", "/[Ll]ogs/", "/[Uu]ser[Ss]ettings/", "/[Bb]uild/",
+        "/[Bb]uilds/", "/[Mm]emoryCaptures/", "/[Rr]ecordings/", ".utmp/", ".vs/", ".idea/",
+        "*.user", "*.suo", "*.csproj", "*.sln", "*.log", "mono_crash.*",
+    ):  # fmt: skip
+        assert pattern in lines, pattern
+
+
+def test_a_ros2_project_gets_the_define_in_every_build_target_group(tmp_path):
+    project = _init(tmp_path, "2")
+    applied = run_cli("apply", str(project / "robot.yaml"))
+    assert applied.code == 0, applied.out + applied.err
+    text = (project / "ProjectSettings/ProjectSettings.asset").read_text()
+    for group in ("Standalone", "Android", "iPhone", "WebGL", "Windows Store Apps", "Server"):
+        assert re.search(rf"^    {group}: ROS2$", text, re.M), group
+    again = run_cli("apply", "--check", str(project / "robot.yaml"))
+    assert again.code == 0, again.out
