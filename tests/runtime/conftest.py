@@ -1,0 +1,79 @@
+"""Fixtures for the runtime tests: one real rosbridge (ROS 1) per session, ROS#'s real client
+compiled once per session, and the sample's interface package as Python modules for rospy."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from helpers import SYSTEM_PYTHON, require
+
+from tests.runtime.bridge import Bridge, start_bridge, vendor_folder
+from tests.runtime.client import build_client
+from tests.runtime.runtime_helpers import SAMPLE_INTERFACES, python_package_of
+
+
+@pytest.fixture(scope="session")
+def rosbridge_sources() -> Path:
+    folder = vendor_folder("UNITYSCAFFOLD_ROSBRIDGE", "rosbridge_suite-ros1")
+    require(folder, "rosbridge_suite's ROS 1 sources (UNITYSCAFFOLD_ROSBRIDGE)")
+    assert folder
+    return folder
+
+
+@pytest.fixture(scope="session")
+def rossharp_package() -> Path:
+    folder = vendor_folder("UNITYSCAFFOLD_ROSSHARP", "ros-sharp/2.2.1/com.siemens.ros-sharp")
+    require(folder, "ROS# 2.2.1's com.siemens.ros-sharp folder (UNITYSCAFFOLD_ROSSHARP)")
+    assert folder
+    return folder
+
+
+@pytest.fixture(scope="session")
+def mono() -> str:
+    path = shutil.which("mono")
+    require(path, "Mono's runtime (Debian package mono-runtime)")
+    require(Path("/usr/lib/mono/4.5/Facades/netstandard.dll").exists(), "Debian's mono-devel")
+    assert path
+    return path
+
+
+@pytest.fixture(scope="session")
+def sample_python(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The sample's diffbot_msgs as genpy modules (messages, action messages, service)."""
+    require(Path("/usr/lib/genpy/genmsg_py.py").exists(), "Debian's python3-genpy")
+    out = tmp_path_factory.mktemp("sample_python")
+    python_package_of(SAMPLE_INTERFACES, "diffbot_msgs", out)
+    return out
+
+
+@pytest.fixture(scope="session")
+def bridge(
+    rosbridge_sources: Path, sample_python: Path, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[Bridge]:
+    """rosmaster, rosbridge_websocket and rosapi_node on free loopback ports for the session."""
+    require(Path("/usr/bin/rosmaster").exists(), "Debian's python3-rosmaster")
+    modules = "import rospy, tornado, twisted, autobahn, bson, PIL, rosnode, rosparam, rosservice"
+    require(
+        subprocess.run([str(SYSTEM_PYTHON), "-c", modules], capture_output=True).returncode == 0,
+        "rosbridge's Debian dependencies (see .ci/run)",
+    )
+    home = tmp_path_factory.mktemp("rosbridge")
+    running = start_bridge(
+        rosbridge_sources, home, extra_python_path=[sample_python], packages=[SAMPLE_INTERFACES]
+    )
+    try:
+        yield running
+    finally:
+        running.close()
+
+
+@pytest.fixture(scope="session")
+def rossharp_client(
+    mcs: str, mono: str, rossharp_package: Path, tmp_path_factory: pytest.TempPathFactory
+) -> Path:
+    """ROS#'s RosBridgeClient.dll with its shipped ROS 1 message classes, Plugins beside it."""
+    return build_client(mcs, rossharp_package, tmp_path_factory.mktemp("rossharp_client"))

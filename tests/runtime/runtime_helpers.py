@@ -1,0 +1,165 @@
+"""Helpers of the runtime tests: which types to exercise, their C# classes, the echo program,
+and running the rospy side of a round trip."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+from helpers import SYSTEM_PYTHON
+
+from tests.runtime.bridge import GENMSG_PY, GENSRV_PY, ROS1_SHARE, Bridge
+from tests.runtime.client import CSHARP, build_client, mcs_compile
+from unityscaffold.codegen import GeneratedCode, Options, generate
+from unityscaffold.interfaces.model import Dialect, MessageSpec
+from unityscaffold.interfaces.registry import Registry
+
+REPO = Path(__file__).resolve().parents[2]
+DATA = Path(__file__).parent / "data"
+SAMPLE_INTERFACES = REPO / "sample_project" / "ros_ws" / "src"
+# ROS# maps these two to its hand-written time primitives: a known defect (test_wire_defects.py).
+TIME_PRIMITIVES = ("std_msgs/Time", "std_msgs/Duration")
+
+
+def ros1_registry() -> Registry:
+    """Debian's ROS 1 packages plus the sample's diffbot_msgs (no built-in copies)."""
+    return Registry.load(Dialect.ROS1, [SAMPLE_INTERFACES], use_builtin=False)
+
+
+def message_types(registry: Registry) -> list[MessageSpec]:
+    """Every message type: .msg files, action messages; service halves separately."""
+    interfaces, problems = registry.parse_all()
+    assert not problems, problems
+    messages: dict[str, MessageSpec] = {}
+    for spec in registry.closure(interfaces):
+        if spec.subfolder != "srv":
+            messages[spec.full_name] = spec
+    return [messages[name] for name in sorted(messages)]
+
+
+def python_package_of(interfaces: Path, package: str, out: Path) -> None:
+    """genpy modules for ``package`` (its messages, the messages of its actions as genaction
+    writes them, and its services) under ``out/package``, importable by rospy and rosbridge."""
+    registry = Registry.load(Dialect.ROS1, [interfaces], use_builtin=False)
+    interfaces_of, problems = registry.parse_all()
+    assert not problems, problems
+    msg_folder = out / "definitions" / package / "msg"
+    msg_folder.mkdir(parents=True)
+    for spec in registry.closure(interfaces_of):
+        if spec.package == package and spec.subfolder != "srv":
+            (msg_folder / f"{spec.name}.msg").write_text(spec.text)
+    includes = [f"-I{package}:{msg_folder}"] + [
+        f"-I{p.parent.name}:{p}" for p in sorted(ROS1_SHARE.glob("*/msg")) if p.is_dir()
+    ]
+    target = out / package
+    target.mkdir()
+    (target / "__init__.py").write_text("")
+    for kind, script, folder in (
+        ("msg", GENMSG_PY, msg_folder),
+        ("srv", GENSRV_PY, interfaces / package / "srv"),
+    ):
+        sources = sorted(folder.glob(f"*.{kind}"))
+        base = [str(SYSTEM_PYTHON), str(script), "-p", package, "-o", str(target / kind)]
+        base += includes
+        for source in sources:
+            subprocess.run([*base, str(source)], check=True, capture_output=True, timeout=60)
+        if sources:
+            subprocess.run([*base, "--initpy"], check=True, capture_output=True, timeout=60)
+
+
+def write_code(code: GeneratedCode, out: Path) -> list[Path]:
+    paths = []
+    for file in code.files:
+        if file.path.endswith(".cs"):
+            path = out / file.path
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(file.text, encoding="utf-8")
+            paths.append(path)
+    return paths
+
+
+@dataclass(frozen=True)
+class EchoProgram:
+    folder: Path
+    classes: dict[str, str]  # ROS type -> C# full class name
+
+
+def build_echo(
+    mcs: str,
+    client: Path,
+    registry: Registry,
+    roots: list[MessageSpec],
+    out: Path,
+    *,
+    include_shipped: bool = False,
+) -> EchoProgram:
+    """Echo.exe beside its client. By default the client is ROS#'s with its shipped classes and
+    ours cover the rest; ``include_shipped`` compiles a client from ROS#'s sources without its
+    message classes (``client`` is then ROS#'s package folder) and ours for every type."""
+    code = generate(registry, list(roots), Options(Dialect.ROS1, include_shipped=include_shipped))
+    ours = write_code(code, out / "src")
+    sources = [CSHARP / "Echo.cs"]
+    if include_shipped:
+        client = build_client(mcs, client, out / "client", message_sources=ours)
+    else:
+        sources += ours
+    folder = client.parent
+    exe = folder / f"{out.name}.exe"
+    references = [client, folder / "Newtonsoft.Json.dll", folder / "websocket-sharp.dll"]
+    mcs_compile(mcs, sources, exe, references=references, target="exe")
+    classes = {spec.full_name: code.message_class(spec.full_name).full_name for spec in roots}
+    return EchoProgram(exe, classes)
+
+
+@dataclass(frozen=True)
+class RoundTrip:
+    results: dict[str, str | None]
+    echo_output: str
+    node_output: str
+
+
+def round_trip(
+    bridge: Bridge, mono: str, echo: EchoProgram, types: list[str], work: Path, *, seed: int = 13
+) -> RoundTrip:
+    """rospy publishes each type, ROS#'s client echoes it through rosbridge, rospy compares."""
+    work.mkdir(parents=True, exist_ok=True)
+    plan = [
+        {"type": name, "in": f"/rt{seed}/in{i}", "out": f"/rt{seed}/out{i}"}
+        for i, name in enumerate(types)
+    ]
+    (work / "plan.json").write_text(json.dumps(plan))
+    (work / "plan.txt").write_text(
+        "".join(f"{p['in']} {p['out']} {echo.classes[p['type']]}\n" for p in plan)
+    )
+    result = work / "result.json"
+    node = subprocess.Popen(
+        [
+            str(SYSTEM_PYTHON),
+            str(DATA / "roundtrip_node.py"),
+            str(work / "plan.json"),
+            str(result),
+            str(seed),
+            "60",
+        ],
+        env=bridge.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+    )
+    client = subprocess.Popen(
+        [mono, str(echo.folder), bridge.url, str(work / "plan.txt")],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        env={**os.environ, "MONO_ENV_OPTIONS": ""},
+    )
+    try:
+        node_output, _ = node.communicate(timeout=120)
+    finally:
+        echo_output, _ = client.communicate(input="", timeout=30)
+    results = json.loads(result.read_text()) if result.exists() else {}
+    return RoundTrip(results, echo_output, node_output)
