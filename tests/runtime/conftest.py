@@ -13,7 +13,14 @@ from helpers import SYSTEM_PYTHON, require
 
 from tests.runtime.bridge import Bridge, start_bridge, vendor_folder
 from tests.runtime.client import build_client
-from tests.runtime.runtime_helpers import SAMPLE_INTERFACES, python_package_of
+from tests.runtime.runtime_helpers import (
+    SAMPLE_INTERFACES,
+    TIME_PRIMITIVES,
+    build_ours_only_client,
+    message_types,
+    python_package_of,
+    ros1_registry,
+)
 
 
 @pytest.fixture(scope="session")
@@ -77,3 +84,15 @@ def rossharp_client(
 ) -> Path:
     """ROS#'s RosBridgeClient.dll with its shipped ROS 1 message classes, Plugins beside it."""
     return build_client(mcs, rossharp_package, tmp_path_factory.mktemp("rossharp_client"))
+
+
+@pytest.fixture(scope="session")
+def ours_only_client(
+    mcs: str, mono: str, rossharp_package: Path, tmp_path_factory: pytest.TempPathFactory
+) -> Path:
+    """ROS#'s client without its message classes, ours (--include-shipped) for every ROS 1
+    message type instead (std_msgs/Time and Duration aside: ROS# maps them to its primitives)."""
+    registry = ros1_registry()
+    roots = [s for s in message_types(registry) if s.full_name not in TIME_PRIMITIVES]
+    out = tmp_path_factory.mktemp("ours_only_client")
+    return build_ours_only_client(mcs, rossharp_package, registry, roots, out)

@@ -7,6 +7,7 @@ import json
 import os
 import subprocess
 from dataclasses import dataclass
+from typing import Any
 from pathlib import Path
 
 from helpers import SYSTEM_PYTHON
@@ -87,6 +88,15 @@ class EchoProgram:
     classes: dict[str, str]  # ROS type -> C# full class name
 
 
+def build_ours_only_client(
+    mcs: str, package: Path, registry: Registry, roots: list[MessageSpec], out: Path
+) -> Path:
+    """ROS#'s client compiled without its message classes, with ours for ``roots`` and every
+    type they use instead (``--include-shipped``)."""
+    code = generate(registry, list(roots), Options(Dialect.ROS1, include_shipped=True))
+    return build_client(mcs, package, out, message_sources=write_code(code, out / "src"))
+
+
 def build_echo(
     mcs: str,
     client: Path,
@@ -95,17 +105,16 @@ def build_echo(
     out: Path,
     *,
     include_shipped: bool = False,
+    namespace: str | None = None,
 ) -> EchoProgram:
-    """Echo.exe beside its client. By default the client is ROS#'s with its shipped classes and
-    ours cover the rest; ``include_shipped`` compiles a client from ROS#'s sources without its
-    message classes (``client`` is then ROS#'s package folder) and ours for every type."""
-    code = generate(registry, list(roots), Options(Dialect.ROS1, include_shipped=include_shipped))
-    ours = write_code(code, out / "src")
+    """Echo.exe beside ``client``. By default the client is ROS#'s with its shipped classes and
+    ours cover the rest; with ``include_shipped`` the client already holds ours for every type
+    (``build_ours_only_client``)."""
+    options = Options(Dialect.ROS1, include_shipped=include_shipped, namespace=namespace)
+    code = generate(registry, list(roots), options)
     sources = [CSHARP / "Echo.cs"]
-    if include_shipped:
-        client = build_client(mcs, client, out / "client", message_sources=ours)
-    else:
-        sources += ours
+    if not include_shipped:
+        sources += write_code(code, out / "src")
     folder = client.parent
     exe = folder / f"{out.name}.exe"
     references = [client, folder / "Newtonsoft.Json.dll", folder / "websocket-sharp.dll"]
@@ -122,13 +131,25 @@ class RoundTrip:
 
 
 def round_trip(
-    bridge: Bridge, mono: str, echo: EchoProgram, types: list[str], work: Path, *, seed: int = 13
+    bridge: Bridge,
+    mono: str,
+    echo: EchoProgram,
+    entries: list[str] | list[dict[str, Any]],
+    work: Path,
+    *,
+    seed: int = 13,
+    timeout: float = 60,
 ) -> RoundTrip:
-    """rospy publishes each type, ROS#'s client echoes it through rosbridge, rospy compares."""
+    """rospy publishes each type, ROS#'s client echoes it through rosbridge, rospy compares.
+    An entry is a type name or a plan entry (see data/roundtrip_node.py: key, set, delay)."""
     work.mkdir(parents=True, exist_ok=True)
     plan = [
-        {"type": name, "in": f"/rt{seed}/in{i}", "out": f"/rt{seed}/out{i}"}
-        for i, name in enumerate(types)
+        {
+            **({"type": entry} if isinstance(entry, str) else entry),
+            "in": f"/rt{seed}/in{i}",
+            "out": f"/rt{seed}/out{i}",
+        }
+        for i, entry in enumerate(entries)
     ]
     (work / "plan.json").write_text(json.dumps(plan))
     (work / "plan.txt").write_text(
@@ -142,7 +163,7 @@ def round_trip(
             str(work / "plan.json"),
             str(result),
             str(seed),
-            "60",
+            str(timeout),
         ],
         env=bridge.env,
         stdout=subprocess.PIPE,
@@ -158,7 +179,7 @@ def round_trip(
         env={**os.environ, "MONO_ENV_OPTIONS": ""},
     )
     try:
-        node_output, _ = node.communicate(timeout=120)
+        node_output, _ = node.communicate(timeout=timeout + 60)
     finally:
         echo_output, _ = client.communicate(input="", timeout=30)
     results = json.loads(result.read_text()) if result.exists() else {}

@@ -29,13 +29,13 @@ def test_every_message_type_round_trips_with_newtonsoft(
     mcs: str,
     mono: str,
     rossharp_client: Path,
-    rossharp_package: Path,
+    ours_only_client: Path,
     tmp_path: Path,
     include_shipped: bool,
 ) -> None:
     registry = ros1_registry()
     roots = [s for s in message_types(registry) if s.full_name not in TIME_PRIMITIVES]
-    client = rossharp_package if include_shipped else rossharp_client
+    client = ours_only_client if include_shipped else rossharp_client
     echo = build_echo(
         mcs, client, registry, roots, tmp_path / "Echo", include_shipped=include_shipped
     )

@@ -5,7 +5,10 @@ on the plan's input topic (again every half second until answered), subscribes t
 topic, and compares the first message that comes back with what it sent, field by field: exact,
 except std_msgs/Header.seq, which every ROS 1 publisher overwrites. Float32 fields hold values
 that float32 represents exactly, so they compare exactly too.
-Writes {type: null | "first difference"} as JSON, or "no answer" for a type that never came back.
+A plan entry may also "set" fields to given values after the random fill ({"a.b": {"string":
+"x"}}, {"float": "nan"}, {"duration": [secs, nsecs]}) and "delay" its first publication (s).
+Writes {key: null | "first difference"} as JSON, or "no answer" for one that never came back;
+the key is the entry's "key", else its type.
 Usage: roundtrip_node.py PLAN.json RESULT.json SEED TIMEOUT
 """
 
@@ -79,6 +82,26 @@ def random_message(rng, cls):
     return message
 
 
+def special(value):
+    ((kind, given),) = value.items()
+    if kind == "float":
+        return float(given)
+    if kind == "duration":
+        return genpy.Duration(*given)
+    if kind == "time":
+        return genpy.Time(*given)
+    return given
+
+
+def set_fields(message, settings):
+    for path, value in settings.items():
+        *parents, name = path.split(".")
+        owner = message
+        for parent in parents:
+            owner = getattr(owner, parent)
+        setattr(owner, name, special(value))
+
+
 def difference(sent, got, path, slot_type):
     """The first field where ``got`` differs from ``sent``, or None."""
     if slot_type.endswith("]") and not slot_type.startswith(("uint8[", "char[")):
@@ -100,9 +123,13 @@ def difference(sent, got, path, slot_type):
         return None
     if isinstance(sent, bytes):
         got = bytes(got) if not isinstance(got, str) else got.encode("latin-1")
-    if sent != got:
+    if sent != got and not (sent != sent and got != got):  # NaN equals NaN here
         return f"{path}: got {got!r}, sent {sent!r}"
     return None
+
+
+def key(entry):
+    return entry.get("key", entry["type"])
 
 
 def main(plan_path, result_path, seed, timeout):
@@ -117,30 +144,33 @@ def main(plan_path, result_path, seed, timeout):
     def receiver(entry, sent):
         def receive(message):
             with lock:
-                if entry["type"] not in results:
-                    results[entry["type"]] = difference(sent, message, "", entry["type"])
+                if key(entry) not in results:
+                    results[key(entry)] = difference(sent, message, "", entry["type"])
 
         return receive
 
     for entry in plan:
         cls = roslib.message.get_message_class(entry["type"])
         sent = random_message(rng, cls)
+        set_fields(sent, entry.get("set", {}))
         publisher = rospy.Publisher(entry["in"], cls, queue_size=1)
         rospy.Subscriber(entry["out"], cls, receiver(entry, sent))
         pending.append((entry, publisher, sent))
     print("ready", flush=True)
-    deadline = time.monotonic() + float(timeout)
+    start = time.monotonic()
+    deadline = start + float(timeout)
     while time.monotonic() < deadline:
         with lock:
-            pending = [p for p in pending if p[0]["type"] not in results]
+            pending = [p for p in pending if key(p[0]) not in results]
         if not pending:
             break
-        for _entry, publisher, sent in pending:
-            if publisher.get_num_connections():
+        for entry, publisher, sent in pending:
+            late = time.monotonic() - start < entry.get("delay", 0)
+            if publisher.get_num_connections() and not late:
                 publisher.publish(sent)
         time.sleep(0.5)
     for entry, _publisher, _sent in pending:
-        results.setdefault(entry["type"], "no answer")
+        results.setdefault(key(entry), "no answer")
     with open(result_path, "w") as handle:
         json.dump(results, handle, indent=1, sort_keys=True)
     rospy.signal_shutdown("done")
