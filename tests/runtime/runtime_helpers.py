@@ -7,8 +7,8 @@ import json
 import os
 import subprocess
 from dataclasses import dataclass
-from typing import Any
 from pathlib import Path
+from typing import Any
 
 from helpers import SYSTEM_PYTHON
 
