@@ -156,3 +156,28 @@ def test_a_project_folder_without_assets_points_at_the_project_key(sample):
         f"             ^\n"
         "  hint: set `project:` in the manifest, or create one with scaffold init\n"
     )
+
+
+@pytest.mark.parametrize("name", ["std_msgs/Time", "std_msgs/Duration"])
+def test_std_msgs_time_types_are_refused_with_rossharp_classes(sample, name):
+    # ROS#'s Std.Time/Std.Duration are the bare primitives; tests/runtime/test_wire_defects.py
+    # shows rosbridge refusing what they send as these types.
+    _edit(sample, "type: nav_msgs/Odometry", f"type: {name}")
+    _apply_fails(
+        sample,
+        "robot.yaml:19:",
+        f"error: {name} cannot be sent or received with ROS#'s class for it",
+        "holds it in a field 'data'",
+        "the manifest key `namespace:`",
+    )
+
+
+def test_std_msgs_time_types_apply_with_a_namespace(sample):
+    _edit(sample, "type: nav_msgs/Odometry", "type: std_msgs/Time")
+    _edit(sample, "connector:", "namespace: Robot.Messages\nconnector:")
+    run = run_cli("apply", str(sample / "robot.yaml"))
+    assert run.code == 0, run.out + run.err
+    generated = sample / "unity/Assets/RosGenerated/Messages/Std/msg/Time.cs"
+    assert "public global::RosSharp.RosBridgeClient.MessageTypes.Std.Time data" in (
+        generated.read_text()
+    )

@@ -181,6 +181,10 @@ def round_trip(
     try:
         node_output, _ = node.communicate(timeout=timeout + 60)
     finally:
-        echo_output, _ = client.communicate(input="", timeout=30)
+        try:
+            echo_output, _ = client.communicate(input="", timeout=30)
+        except subprocess.TimeoutExpired:  # ROS#'s Close can hang on a socket rosbridge broke
+            client.kill()
+            echo_output, _ = client.communicate()
     results = json.loads(result.read_text()) if result.exists() else {}
     return RoundTrip(results, echo_output, node_output)

@@ -24,7 +24,7 @@ from unityscaffold.codegen.scripts import (
 )
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.fileout import DesiredFile
-from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
+from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Direction, Manifest, Role, Service, Topic
 from unityscaffold.unity.meta import folder_meta, meta_guid, monoscript_meta
@@ -74,6 +74,32 @@ def _resolve(registry: Registry, item: Topic | Service, kind: type[_Spec]) -> _S
 
 
 _Entry = tuple[Topic | Service, MessageSpec | ServiceSpec]
+
+# ROS 1 std_msgs types whose ROS# class is a hand-written time primitive of another shape.
+_MISSHAPEN_IN_ROSSHARP = ("std_msgs/Time", "std_msgs/Duration")
+
+
+def _check_time_messages(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> None:
+    """Refuse an entry whose type uses ROS 1's std_msgs/Time or std_msgs/Duration while ROS#'s
+    classes are in use: ROS#'s Std.Time/Std.Duration, which stand for them, are the bare time
+    primitive ({secs, nsecs}), while these messages hold it in a field 'data'. rosbridge refuses
+    what such a class sends and the value it receives is lost (seen with rosbridge 0.11)."""
+    if manifest.ros is not Dialect.ROS1 or manifest.namespace is not None:
+        return
+    for item, spec in entries:
+        used = {m.full_name for m in registry.closure([spec])}
+        for name in _MISSHAPEN_IN_ROSSHARP:
+            if name in used:
+                short = name.split("/")[1]
+                raise LocatedError.at(
+                    item.locations.of("type"),
+                    f"{name} cannot be sent or received with ROS#'s class for it: "
+                    f"Std.{short} is the bare {short.lower()} primitive {{secs, nsecs}}, while "
+                    f"{name} holds it in a field 'data' (rosbridge refuses what it sends)",
+                    hint="choose a root namespace with the manifest key `namespace:` "
+                    f"(then a {name} class of the right shape is generated), or use a "
+                    f"message with a {short.lower()} field",
+                )
 
 
 def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> GeneratedCode:
@@ -188,6 +214,7 @@ def plan_code(
     items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
+    _check_time_messages(manifest, registry, items)
     messages = _generate(manifest, registry, items)
     messages_dir = manifest.output_dir / "Messages"
     scripts_dir = manifest.output_dir / "Scripts"

@@ -275,7 +275,12 @@ def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
 def _skip_reason(item: ClassEntry, dialect: Dialect, include_shipped: bool) -> str | None:
     key = (item.cs_class.namespace.rsplit(".", 1)[-1], item.cs_class.name)
     if dialect is Dialect.ROS1 and ROS1_HANDWRITTEN.get(key) == item.ros_message_name:
-        return f"ROS# hand-writes {item.cs_class.full_name} (never generated)"
+        return (
+            f"ROS# hand-writes {item.cs_class.full_name} (never generated); it is the bare time "
+            f"primitive, not {item.ros_message_name} (whose value is in a field 'data'), so "
+            f"it does not work as a {item.ros_message_name} message; another root namespace "
+            "gives one of the right shape"
+        )
     if include_shipped:
         return None
     shipped = shipped_classes(dialect).get(key)
