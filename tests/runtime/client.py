@@ -52,9 +52,12 @@ def mcs_compile(
     *,
     references: Sequence[Path] = (),
     target: str = "library",
+    main: str | None = None,
 ) -> None:
     """Compile or fail with mcs's output (errors only; third-party warnings are not ours)."""
     args = [mcs, *THIRD_PARTY_FLAGS, f"-target:{target}", f"-out:{out}"]
+    if main:
+        args.append(f"-main:{main}")
     args += [f"-r:{r}" for r in references]
     args += [str(s) for s in sources]
     done = subprocess.run(args, capture_output=True, text=True, timeout=600, check=False)

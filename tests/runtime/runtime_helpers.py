@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import os
 import subprocess
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -14,8 +15,8 @@ from helpers import SYSTEM_PYTHON
 
 from tests.runtime.bridge import GENMSG_PY, GENSRV_PY, ROS1_SHARE, Bridge
 from tests.runtime.client import CSHARP, build_client, mcs_compile
-from unityscaffold.codegen import GeneratedCode, Options, generate
-from unityscaffold.interfaces.model import Dialect, MessageSpec
+from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
+from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 
 REPO = Path(__file__).resolve().parents[2]
@@ -106,26 +107,42 @@ def build_echo(
     *,
     include_shipped: bool = False,
     namespace: str | None = None,
+    services: Sequence[ServiceSpec] = (),
 ) -> EchoProgram:
     """Echo.exe beside ``client``. By default the client is ROS#'s with its shipped classes and
     ours cover the rest; with ``include_shipped`` the client already holds ours for every type
     (``build_ours_only_client``)."""
     options = Options(Dialect.ROS1, include_shipped=include_shipped, namespace=namespace)
-    code = generate(registry, list(roots), options)
+    code = generate(registry, [*roots, *services], options)
     sources = [CSHARP / "Echo.cs"]
+    if services:
+        sources.append(CSHARP / "ServiceEcho.cs")
     if not include_shipped:
         sources += write_code(code, out / "src")
     folder = client.parent
     exe = folder / f"{out.name}.exe"
     references = [client, folder / "Newtonsoft.Json.dll", folder / "websocket-sharp.dll"]
-    mcs_compile(mcs, sources, exe, references=references, target="exe")
+    main = "ServiceEcho" if services else "Echo"
+    mcs_compile(mcs, sources, exe, references=references, target="exe", main=main)
     classes = {spec.full_name: code.message_class(spec.full_name).full_name for spec in roots}
+    for service in services:
+        halves = code.classes[f"{service.package}/srv/{service.name}"]
+        classes[service.full_name] = " ".join(
+            halves[role].full_name for role in (ClassRole.REQUEST, ClassRole.RESPONSE)
+        )
     return EchoProgram(exe, classes)
+
+
+def service_types(registry: Registry) -> list[ServiceSpec]:
+    """Every ROS 1 service type."""
+    interfaces, problems = registry.parse_all()
+    assert not problems, problems
+    return sorted((i for i in interfaces if isinstance(i, ServiceSpec)), key=lambda s: s.full_name)
 
 
 @dataclass(frozen=True)
 class RoundTrip:
-    results: dict[str, str | None]
+    results: dict[str, Any]
     echo_output: str
     node_output: str
 
@@ -155,11 +172,18 @@ def round_trip(
     (work / "plan.txt").write_text(
         "".join(f"{p['in']} {p['out']} {echo.classes[p['type']]}\n" for p in plan)
     )
+    return _run_pair(bridge, mono, echo, work, "roundtrip_node.py", seed, timeout)
+
+
+def _run_pair(
+    bridge: Bridge, mono: str, echo: EchoProgram, work: Path, node: str, seed: int, timeout: float
+) -> RoundTrip:
+    """Run the rospy side (``data/node``) and the C# side on ``work``'s plan files together."""
     result = work / "result.json"
-    node = subprocess.Popen(
+    rospy_side = subprocess.Popen(
         [
             str(SYSTEM_PYTHON),
-            str(DATA / "roundtrip_node.py"),
+            str(DATA / node),
             str(work / "plan.json"),
             str(result),
             str(seed),
@@ -179,7 +203,7 @@ def round_trip(
         env={**os.environ, "MONO_ENV_OPTIONS": ""},
     )
     try:
-        node_output, _ = node.communicate(timeout=timeout + 60)
+        node_output, _ = rospy_side.communicate(timeout=timeout + 60)
     finally:
         try:
             echo_output, _ = client.communicate(input="", timeout=30)
@@ -188,3 +212,27 @@ def round_trip(
             echo_output, _ = client.communicate()
     results = json.loads(result.read_text()) if result.exists() else {}
     return RoundTrip(results, echo_output, node_output)
+
+
+def service_round_trip(
+    bridge: Bridge,
+    mono: str,
+    echo: EchoProgram,
+    types: list[str],
+    work: Path,
+    *,
+    seed: int = 31,
+    timeout: float = 60,
+) -> RoundTrip:
+    """Both halves of each service type through ROS#'s client, as client and as server (see
+    data/service_node.py and csharp/ServiceEcho.cs)."""
+    work.mkdir(parents=True, exist_ok=True)
+    plan = [
+        {"type": name, "py": f"/srv{seed}/py{i}", "cs": f"/srv{seed}/cs{i}"}
+        for i, name in enumerate(types)
+    ]
+    (work / "plan.json").write_text(json.dumps(plan))
+    (work / "plan.txt").write_text(
+        "".join(f"{p['py']} {p['cs']} {echo.classes[p['type']]}\n" for p in plan)
+    )
+    return _run_pair(bridge, mono, echo, work, "service_node.py", seed, timeout)
