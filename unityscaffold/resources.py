@@ -3,14 +3,27 @@
 They live inside the package (``unityscaffold/templates/``, ``unityscaffold/schema/``), so a
 source checkout, an editable install and a wheel all read them the same way: templates through
 jinja's ``PackageLoader``, other files through ``importlib.resources``.
+
+Compiled templates are kept in the user's cache folder (``$XDG_CACHE_HOME`` or ``~/.cache``,
+``%LOCALAPPDATA%`` on Windows, under ``unityscaffold/<version>-templates``), so a command does
+not parse and compile them again. jinja checks each entry against the template's source and
+the Python version; set ``UNITYSCAFFOLD_NO_CACHE`` to do without. A cache folder that cannot
+be written is simply not used. Nothing is written into projects or the package.
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
 from functools import cache
+from importlib.abc import Traversable
 from importlib.resources import files
+from pathlib import Path
 
 import jinja2
+from jinja2.bccache import Bucket, FileSystemBytecodeCache
+
+from unityscaffold import __version__
 
 __all__ = ["rossharp_catalog_text", "schema_text", "template_environment", "template_folder"]
 
@@ -18,11 +31,38 @@ _PACKAGE = "unityscaffold"
 _TEMPLATES = "templates"
 
 
+class _UserCache(FileSystemBytecodeCache):
+    """jinja's file cache, creating its folder on first use and never failing a command."""
+
+    def load_bytecode(self, bucket: Bucket) -> None:
+        with contextlib.suppress(OSError):  # an unreadable cache: compile
+            super().load_bytecode(bucket)
+
+    def dump_bytecode(self, bucket: Bucket) -> None:
+        with contextlib.suppress(OSError):  # no cache this time: the next command compiles
+            os.makedirs(self.directory, exist_ok=True)
+            super().dump_bytecode(bucket)
+
+
+def _cache_folder() -> Path | None:
+    if os.environ.get("UNITYSCAFFOLD_NO_CACHE"):
+        return None
+    base = os.environ.get("XDG_CACHE_HOME") or (
+        os.environ.get("LOCALAPPDATA") if os.name == "nt" else None
+    )
+    root = Path(base) if base else Path.home() / ".cache"
+    if not root.is_absolute():
+        return None
+    return root / "unityscaffold" / f"{__version__}-templates"
+
+
 @cache
 def template_environment() -> jinja2.Environment:
     """The one jinja2 environment for every template: generated C# and the ``init`` project."""
+    folder = _cache_folder()
     return jinja2.Environment(
         loader=jinja2.PackageLoader(_PACKAGE, _TEMPLATES),
+        bytecode_cache=_UserCache(str(folder), "%s.jinja-cache") if folder else None,
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,
         trim_blocks=True,
@@ -37,7 +77,7 @@ def template_folder(folder: str) -> dict[str, bytes]:
     The same paths (prefixed with ``<folder>/``) name the files for ``template_environment``.
     """
     found: dict[str, bytes] = {}
-    pending = [("", files(_PACKAGE) / _TEMPLATES / folder)]
+    pending: list[tuple[str, Traversable]] = [("", files(_PACKAGE) / _TEMPLATES / folder)]
     while pending:
         prefix, node = pending.pop()
         for child in node.iterdir():
@@ -50,6 +90,7 @@ def template_folder(folder: str) -> dict[str, bytes]:
 
 def schema_text() -> str:
     """The shipped ``robot.schema.json`` (``manifest.schema.render_schema`` writes it)."""
+
     return (files(_PACKAGE) / "schema" / "robot.schema.json").read_text(encoding="utf-8")
 
 
