@@ -1,0 +1,124 @@
+"""The sample project's generated scripts, run: in the UnityEngine stand-in's frame loop
+(csharp/UnityEngineRuntime.cs) with ROS#'s real RosConnector and client, against the real
+rosbridge, with a rospy node on the other side (data/script_node.py)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from pathlib import Path
+
+from helpers import SYSTEM_PYTHON
+
+from tests.runtime.bridge import DATA, Bridge, free_port, wait_for
+from tests.runtime.client import CSHARP, mcs_compile
+
+REPO = Path(__file__).resolve().parents[2]
+GENERATED = REPO / "sample_project" / "unity" / "Assets" / "RosGenerated"
+RATE_TOLERANCE = 0.3  # of the 10 Hz rate, over a 4 s window on a shared machine
+
+
+def _build(mcs: str, client: Path, package: Path) -> Path:
+    folder = client.parent
+    engine = folder / "UnityEngine.dll"
+    mcs_compile(mcs, [CSHARP / "UnityEngineRuntime.cs"], engine)
+    connector = package / "Runtime" / "RosBridgeClient" / "RosCommunication" / "RosConnector.cs"
+    plumbing = [p for p in sorted(GENERATED.rglob("*.cs")) if not p.name.endswith(".User.cs")]
+    exe = folder / "Scenario.exe"
+    references = [engine, client, folder / "Newtonsoft.Json.dll", folder / "websocket-sharp.dll"]
+    mcs_compile(
+        mcs,
+        [connector, *plumbing, CSHARP / "Scenario.cs"],
+        exe,
+        references=references,
+        target="exe",
+    )
+    return exe
+
+
+def _subscribed_by_rosbridge(bridge: Bridge, topic: str) -> bool:
+    return "/rosbridge_websocket" in bridge.system_state()[1].get(topic, set())
+
+
+def test_sample_scripts_run_in_a_frame_loop(
+    bridge: Bridge,
+    mcs: str,
+    mono: str,
+    rossharp_client: Path,
+    rossharp_package: Path,
+    tmp_path: Path,
+) -> None:
+    exe = _build(mcs, rossharp_client, rossharp_package)
+    result = tmp_path / "node.json"
+    node = subprocess.Popen(
+        [str(SYSTEM_PYTHON), str(DATA / "script_node.py"), str(result)],
+        env=bridge.env,
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+    )
+    assert node.stdout and node.stdout.readline().strip() == "ready"
+    unreachable = f"ws://127.0.0.1:{free_port()}"
+    scenario = subprocess.Popen(
+        [mono, str(exe), bridge.url, unreachable],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+    )
+    assert scenario.stdin and scenario.stdout
+    report: dict[str, str] = {}
+    lines: list[str] = []
+    try:
+        for line in scenario.stdout:
+            lines.append(line.rstrip())
+            key, _, value = line.rstrip().partition(" ")
+            report.setdefault(key, value)
+            if key == "waiting":
+                # OnDestroy unsubscribed: rosbridge dropped its /odom subscriber, kept the others.
+                wait_for(
+                    "rosbridge to drop /odom",
+                    lambda: not _subscribed_by_rosbridge(bridge, "/odom"),
+                    5,
+                    [],
+                )
+                assert _subscribed_by_rosbridge(bridge, "/base_status")
+                scenario.stdin.write("\n")
+                scenario.stdin.flush()
+        assert scenario.wait(timeout=30) == 0, "\n".join(lines)
+    finally:
+        if scenario.poll() is None:
+            scenario.kill()
+        node.communicate(input="", timeout=30)
+    cmd_vel = json.loads(result.read_text())["cmd_vel"]
+    output = "\n".join(lines)
+
+    # The scripts were started before the connection was up, waited, then worked.
+    assert int(report["connected_frame"]) > 0, output
+    # The publisher published at Rate (10 Hz), calling UpdateMessage before each publish.
+    # (It goes on publishing while the scenario goes on; the rate is measured over the first 4 s.)
+    values = [x for _, x in cmd_vel]
+    assert values == [float(i) for i in range(1, len(values) + 1)], values
+    first = [t for t, x in cmd_vel if x <= int(report["updates"])]
+    rate = (len(first) - 1) / (first[-1] - first[0])
+    assert abs(rate - 10) <= 10 * RATE_TOLERANCE, (len(first), rate)
+    # Subscribers: OnMessage on the frame loop's thread, in arrival order.
+    assert report["off_main_thread"] == "0"
+    order = [int(tick) for tick in report["base_status"].split(",")]
+    assert len(order) > 10 and order == sorted(set(order))
+    assert int(report["odom"]) > 10
+    # /scan comes at 50 Hz; Throttle 100 ms lets rosbridge send at most 10 a second, and never
+    # more than Queue (1) reached OnMessage in one frame.
+    assert (report["throttle"], report["queue"]) == ("100", "1")
+    assert 0 < int(report["scan"]) <= 4 * 10 + 2
+    assert report["scan_most_in_one_frame"] == "1"
+    # A connector that never connects: the documented warning, once, after SecondsTimeout.
+    warning = (
+        f"[warning] BaseStatusSubscriber: no connection to {unreachable}; "
+        "subscription to /base_status is not set up."
+    )
+    assert lines.count(warning) == 1, output
+    # Nothing was thrown on the frame loop's thread: it ran to the end (an exception from a
+    # script would have ended the program). websocket-sharp logs its refused connection itself,
+    # on the connector's thread.
+    assert "done" in report and "Unhandled Exception" not in output
