@@ -13,6 +13,7 @@ from unityscaffold.errors import UserError
 from unityscaffold.fileout import (
     ChangeKind,
     DesiredFile,
+    FileChange,
     plan_files,
     write_files,
     write_if_changed,
@@ -66,11 +67,11 @@ def test_a_failure_while_writing_leaves_nothing_behind(
     real = fileout._write_temp
     calls = []
 
-    def flaky(path: Path, content: bytes, mode: int, durable: bool) -> Path:
-        calls.append(path)
+    def flaky(change: FileChange, durable: bool) -> Path:
+        calls.append(change.path)
         if len(calls) == 3:
-            raise OSError(28, "No space left on device", str(path))
-        return real(path, content, mode, durable)
+            raise OSError(28, "No space left on device", str(change.path))
+        return real(change, durable)
 
     monkeypatch.setattr(fileout, "_write_temp", flaky)
     changes = plan_files(

@@ -24,8 +24,8 @@ from __future__ import annotations
 
 import contextlib
 import enum
+import itertools
 import os
-import tempfile
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -135,36 +135,41 @@ def _make_folders(folder: Path, created: list[Path], ready: set[Path]) -> None:
     """Create ``folder`` and its missing parents, recording each in ``created`` for rollback."""
     if folder in ready:
         return
-    ready.add(folder)
-    missing = [p for p in (folder, *folder.parents) if not p.exists()]
+    missing = []
+    for path in (folder, *folder.parents):
+        if path in ready or path.is_dir():
+            break
+        missing.append(path)
     for path in reversed(missing):
         path.mkdir()
         created.append(path)
+    ready.update((folder, *missing))
 
 
-def _new_file_mode() -> int:
-    # mkstemp creates files as 0600; a new output file should get what open() would give it.
-    umask = os.umask(0)
-    os.umask(umask)
-    return 0o666 & ~umask
-
-
-def _write_temp(path: Path, content: bytes, mode: int, durable: bool) -> Path:
-    """``content`` in a new temporary file beside ``path``, with ``path``'s permission bits
-    (``mode`` if ``path`` does not exist); the temporary file is removed if this fails."""
-    handle, name = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    temp = Path(name)
+def _write_temp(change: FileChange, durable: bool) -> Path:
+    """``change``'s content in a new temporary file beside its target, with the target's
+    permission bits (what the umask allows for a new file); removed again if this fails."""
+    path = change.path
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
+    for attempt in itertools.count():
+        temp = path.with_name(f".{path.name}.{os.getpid()}-{attempt}.tmp")
+        try:
+            # 0o666 less the umask, as open() gives a new file
+            handle = os.open(temp, flags, 0o666)
+            break
+        except FileExistsError:
+            continue
     try:
         with os.fdopen(handle, "wb") as stream:
-            stream.write(content)
+            stream.write(change.content)
             if durable:
                 # On disk before the rename, so that after a power loss the target holds the
                 # old bytes or the new ones. About 2 ms a file on ext4: worth it for a scene,
                 # not for hundreds of generated files that the next apply rewrites anyway.
                 stream.flush()
                 os.fsync(stream.fileno())
-        keep = path.stat().st_mode & 0o7777 if path.exists() else mode
-        os.chmod(temp, keep)
+        if change.kind is not ChangeKind.CREATE and path.exists():
+            os.chmod(temp, path.stat().st_mode & 0o7777)
     except BaseException:
         temp.unlink(missing_ok=True)
         raise
@@ -176,14 +181,13 @@ def _stage(todo: Sequence[FileChange], durable: bool) -> list[tuple[Path, Path]]
     the temporary files and the folders made for them are removed again."""
     created: list[Path] = []
     temps: list[tuple[Path, Path]] = []
-    mode = _new_file_mode()
     ready: set[Path] = set()
     current = None
     try:
         for change in todo:
             current = change.path
             _make_folders(change.path.parent, created, ready)
-            temps.append((_write_temp(change.path, change.content, mode, durable), change.path))
+            temps.append((_write_temp(change, durable), change.path))
     except BaseException as exc:
         for temp, _ in temps:
             temp.unlink(missing_ok=True)
