@@ -5,17 +5,18 @@ from __future__ import annotations
 import difflib
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 
 from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
-from unityscaffold.codegen import GeneratedCode, Options, generate
-from unityscaffold.codegen.layout import output_files
-from unityscaffold.codegen.naming import ClassClash
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import ChangeKind, FileChange, plan_files, write_files
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
+
+if TYPE_CHECKING:  # codegen is imported when `gen` runs: `msgs list` and `show` skip its cost
+    from unityscaffold.codegen import GeneratedCode
 
 __all__ = ["register", "resolve_roots", "run"]
 
@@ -80,6 +81,10 @@ def run(
     use_environment: bool = True,
 ) -> tuple[GeneratedCode, list[FileChange]]:
     """Generate and write; returns what was generated and each file's change."""
+    from unityscaffold.codegen import Options, generate
+    from unityscaffold.codegen.layout import output_files
+    from unityscaffold.codegen.naming import ClassClash
+
     _check_out_dir(out)
     registry = Registry.load(dialect, paths, use_environment=use_environment)
     roots = resolve_roots(registry, names, everything)
