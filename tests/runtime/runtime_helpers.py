@@ -204,6 +204,10 @@ def _run_pair(
     )
     try:
         node_output, _ = rospy_side.communicate(timeout=timeout + 60)
+    except subprocess.TimeoutExpired:  # reported by the caller's assertion, with both outputs
+        rospy_side.kill()
+        node_output, _ = rospy_side.communicate()
+        node_output += f"\n(rospy side killed after {timeout + 60:.0f} s)\n"
     finally:
         try:
             echo_output, _ = client.communicate(input="", timeout=30)
