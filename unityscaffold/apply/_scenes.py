@@ -464,11 +464,19 @@ def plan_scenes(
         doc = _load(manifest, relative, locations[relative])
         before = doc.text()
         plan = ScenePlan(manifest.project_root / relative, relative, before, before)
+        # Checked before the first walk of the hierarchy (a corrupt one may not end), and again
+        # after editing only if something was edited: an unchanged file gives the same answer.
+        _refuse_problems(doc)
         with located_at(locations[relative]):
             _edit_scene(ctx, plan, doc, lock)
-        problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
-        if problems:
-            raise LocatedError(problems)
+        if doc.revision:
+            _refuse_problems(doc)
         plan.after = doc.text()
         plans.append(plan)
     return plans
+
+
+def _refuse_problems(doc: SceneDocument) -> None:
+    problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
+    if problems:
+        raise LocatedError(problems)

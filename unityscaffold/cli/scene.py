@@ -76,7 +76,7 @@ def ls(
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON instead of a tree.")] = False,
 ) -> None:
     """Show the hierarchy with each GameObject's components (script names when resolvable)."""
-    doc = SceneDocument.load(scene)
+    doc = _load_checked(scene)
     names = _script_names(scene)
     if as_json:
         nodes = [_node_json(doc, go, names) for go in doc.gameobjects()]

@@ -183,6 +183,11 @@ def _create(docs: Documents, parent_id: int | None, path: str, name: str) -> int
     docs.insert(Doc(1, go_id, False, go_text), index)
     docs.insert(Doc(4, tr_id, False, tr_text), None if index is None else index + 1)
     if parent_tr is not None:
+        if F.field_span(parent_tr, "m_Children") is None:
+            # Older Unity versions and some prefabs leave the key out of a childless Transform;
+            # it goes where Unity writes it, before m_Father.
+            before = "m_Father" if F.field_span(parent_tr, "m_Father") is not None else None
+            T.insert_field(parent_tr, ["  m_Children: []"], before=before)
         T.append_list_item(parent_tr, "m_Children", f"  - {{fileID: {tr_id}}}")
         docs.touch(parent_tr)
     elif era.scene_roots:

@@ -2,11 +2,13 @@
 
 Every guid-less ``{fileID: N}`` resolves in the file, fileIDs are unique, components and
 GameObjects point at each other, each GameObject has one Transform listed first, parents and
-children agree, ``SceneRoots`` lists exactly the roots, and every changed document parses as YAML.
+children agree, no object is its own ancestor, ``SceneRoots`` lists exactly the roots, and every
+changed document parses as YAML.
 """
 
 from __future__ import annotations
 
+import re
 from collections import Counter
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
@@ -37,15 +39,27 @@ class _Locator:
                 self._lines[id(each)] = line
                 line += each.text.count("\n")
         line = self._lines.get(id(doc), 0)
-        source = doc.header
-        span = F.field_span(doc, key) if key else None
-        if span is not None and line:
-            line += doc.text.count("\n", 0, span[0])
-            source = doc.text[span[0] : doc.text.index("\n", span[0])]
+        source, col = doc.header, 1
+        start, col = _key_offset(doc, key) if key else (-1, 1)
+        if start >= 0 and line:
+            line += doc.text.count("\n", 0, start)
+            source = doc.text[start : doc.text.index("\n", start)]
         where = f"{doc.header}: {key}" if key else doc.header
         return Diagnostic(
-            SourceLocation(self.path, line, 0, source), f"{where}: {message}", hint=hint
+            SourceLocation(self.path, line, col if line else 0, source),
+            f"{where}: {message}",
+            hint=hint,
         )
+
+
+def _key_offset(doc: Doc, key: str) -> tuple[int, int]:
+    """Where ``key``'s line starts in ``doc`` and the key's column: a top-level key, else one
+    nested a level down (a prefab instance's ``m_TransformParent``); (-1, 1) when absent."""
+    span = F.field_span(doc, key)
+    if span is not None:
+        return span[0], 3
+    at = doc.text.find(f"\n    {key}:")
+    return (at + 1, 5) if at >= 0 else (-1, 1)
 
 
 def validate_docs(
@@ -76,6 +90,7 @@ def validate_docs(
     links = _Links.read(docs)
     found += _gameobjects(loc, links, by_id)
     found += _transforms(loc, links, by_id)
+    found += _cycles(loc, docs, by_id)
     found += _scene_roots(loc, docs, by_id)
     for doc in docs:
         if doc.file_id in changed:
@@ -176,7 +191,11 @@ def _transforms(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Dia
             )
     for tr_id, children in links.children.items():
         for child in children:
-            if child in links.father and links.father[child] != tr_id:
+            if child not in links.father or links.father[child] == tr_id:
+                continue  # a Transform that is its own father is reported as a cycle
+            if child == tr_id:
+                out.append(loc.at(by_id[tr_id], "m_Children", "lists this Transform itself"))
+            else:
                 out.append(
                     loc.at(
                         by_id[tr_id],
@@ -184,6 +203,64 @@ def _transforms(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Dia
                         f"lists {by_id[child].header}, whose m_Father is not this Transform",
                     )
                 )
+    return out
+
+
+_CYCLE_HINT = (
+    "every chain of m_Father (and a prefab instance's m_TransformParent) must end at a root, "
+    "{fileID: 0}; restore the file from version control, or fix the parents in Unity"
+)
+
+
+def _parent_links(docs: Sequence[Doc]) -> dict[int, tuple[int, str]]:
+    """Object → (the object above it in the hierarchy, the key saying so).
+
+    A Transform points at its father; a prefab instance's stripped Transform stands for the
+    instance, which points at the Transform it is parented to.
+    """
+    up: dict[int, tuple[int, str]] = {}
+    for doc in docs:
+        if doc.class_id in TRANSFORM_CLASSES:
+            key = "m_PrefabInstance" if doc.stripped else "m_Father"
+            target = F.ref_value(doc, key) or 0
+        elif doc.type_name == "PrefabInstance":
+            key = "m_TransformParent"
+            match = _TRANSFORM_PARENT_RE.search(doc.text)
+            target = int(match.group(1)) if match else 0
+        else:
+            continue
+        if target:
+            up[doc.file_id] = (target, key)
+    return up
+
+
+_TRANSFORM_PARENT_RE = re.compile(r"^    m_TransformParent: \{fileID: (-?\d+)\}", re.M)
+
+
+def _cycles(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> list[Diagnostic]:
+    """Objects that are their own ancestor: a walk down from the roots would never end.
+
+    Each object is visited once (three colours), so this is linear in the file's size.
+    """
+    up = _parent_links(docs)
+    state: dict[int, int] = {}  # 1: on the chain being followed, 2: known to end at a root
+    out = []
+    for start in up:
+        chain: list[int] = []
+        node: int | None = start
+        while node is not None and node in up and state.get(node) is None:
+            state[node] = 1
+            chain.append(node)
+            node = up[node][0]
+        if node is not None and state.get(node) == 1:
+            ring = chain[chain.index(node) :]
+            first = min(ring)
+            ring = ring[ring.index(first) :] + ring[: ring.index(first)]
+            names = " → ".join(f"&{i}" for i in [*ring, first])
+            what = "is its own parent" if len(ring) == 1 else f"is its own ancestor: {names}"
+            out.append(loc.at(by_id[first], up[first][1], what, hint=_CYCLE_HINT))
+        for each in chain:
+            state[each] = 2
     return out
 
 

@@ -79,10 +79,18 @@ class Hierarchy:
     paths: dict[int, str] = field(default_factory=dict)
 
     def walk(self) -> Iterator[tuple[int, Node]]:
-        """(depth, node) in hierarchy order."""
+        """(depth, node) in hierarchy order, each node once.
+
+        A corrupt file can make an object its own ancestor; validation reports that, and this
+        walk still ends (a node met again is not entered again).
+        """
         stack = [(0, node_id) for node_id in reversed(self.roots)]
+        seen: set[int] = set()
         while stack:
             depth, node_id = stack.pop()
+            if node_id in seen:
+                continue
+            seen.add(node_id)
             node = self.nodes[node_id]
             yield depth, node
             stack.extend((depth + 1, child) for child in reversed(node.children))

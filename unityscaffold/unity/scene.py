@@ -258,7 +258,7 @@ class SceneDocument:
         return GameObject(
             node_id,
             node.name,
-            self.hierarchy.paths[node_id],
+            self.hierarchy.paths.get(node_id, node.name),  # unreachable only in a corrupt file
             node.transform_id,
             components,
             node.prefab_instance_id,
