@@ -104,6 +104,29 @@ def _components(*items: str) -> str:
             _lock(_components("{" + _SCENE + ', "entry": null}')),
             "components[0].entry should be a string, found null",
         ),
+        (
+            _lock(_components("{" + _SCENE + ', "file_id": "12"}')),
+            "components[0].file_id should be a fileID (a positive 64-bit integer), found the "
+            'string "12"',
+        ),
+        (
+            _lock(_components("{" + _SCENE + ', "file_id": 0}')),
+            "components[0].file_id should be a fileID (a positive 64-bit integer), found the "
+            "number 0",
+        ),
+        (
+            _lock(_components(), '"gameobjects": []'),
+            "gameobjects should be an object, found a list",
+        ),
+        (
+            _lock(_components(), '"gameobjects": {"Assets/S.unity": {"Robot": -1}}'),
+            'gameobjects["Assets/S.unity"]["Robot"] should be a fileID (a positive 64-bit '
+            "integer), found the number -1",
+        ),
+        (
+            _lock(_components(), '"gameobjects": {"../S.unity": {}}'),
+            f'gameobjects has the key "../S.unity", which is not {_INSIDE}',
+        ),
     ],
 )
 def test_a_malformed_lock_says_what_was_expected_where(tmp_path, text, detail):

@@ -2,8 +2,14 @@
 
 It records every generated file with the sha256 of what apply wrote (so a hand edit can be told
 from an outdated file), the user files apply created (so an untouched one can be removed with
-its script), and the scene components apply attached (so they can be pruned when the manifest
-drops them). Paths are relative to the Unity project, so the lock survives moving the project.
+its script), the scene components apply attached (so they can be pruned when the manifest
+drops them), and the fileIDs of those components and of the GameObjects apply made or adopted.
+The fileIDs are the objects' identity: a GameObject renamed or re-parented in Unity keeps its
+fileID, so apply can tell it moved instead of creating a second one under the old name. Paths
+are relative to the Unity project, so the lock survives moving the project.
+
+A lock written before fileIDs were recorded (no ``gameobjects``, no ``file_id``) still reads:
+such entries are matched by path, as they were then, and the next apply records the fileIDs.
 """
 
 from __future__ import annotations
@@ -15,7 +21,15 @@ from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import UserError
 
-__all__ = ["LOCK_VERSION", "LockComponent", "LockFile", "lock_path", "recorded", "sha256"]
+__all__ = [
+    "LOCK_VERSION",
+    "LockComponent",
+    "LockFile",
+    "LockGameObject",
+    "lock_path",
+    "recorded",
+    "sha256",
+]
 
 LOCK_VERSION = 1
 
@@ -45,6 +59,16 @@ class LockComponent:
     gameobject: str
     script: str
     entry: str = ""  # the manifest entry that asked for it, e.g. "topic /odom"
+    file_id: int = 0  # the component's fileID in the scene; 0 in a lock from before they were
+
+
+@dataclass(frozen=True, slots=True, order=True)
+class LockGameObject:
+    """A GameObject apply made or adopted (an entry's GameObject or one on its path)."""
+
+    scene: str
+    path: str
+    file_id: int
 
 
 class _Malformed(Exception):
@@ -111,6 +135,25 @@ def _asset_map(data: dict[str, object], key: str) -> dict[str, str]:
     return found
 
 
+def _file_id(value: object, where: str) -> int:
+    if type(value) is not int or not 0 < value < 1 << 63:
+        raise _wrong(where, "a fileID (a positive 64-bit integer)", value)
+    return value
+
+
+def _gameobjects(data: dict[str, object]) -> tuple[LockGameObject, ...]:
+    scenes = _object(data.get("gameobjects", {}), "gameobjects")
+    found = []
+    for scene, paths in scenes.items():
+        shown = json.dumps(scene, ensure_ascii=False)
+        if not _inside_assets(scene):
+            raise _Malformed(f"gameobjects has the key {shown}, which is not {_INSIDE_ASSETS}")
+        for path, file_id in _object(paths, f"gameobjects[{shown}]").items():
+            where = f"gameobjects[{shown}][{json.dumps(path, ensure_ascii=False)}]"
+            found.append(LockGameObject(scene, path, _file_id(file_id, where)))
+    return tuple(found)
+
+
 def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
     entries = data.get("components", _MISSING)
     if not isinstance(entries, list):
@@ -124,19 +167,25 @@ def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
             for key in ("scene", "gameobject", "script")
         )
         entry_name = _string(item.get("entry", ""), f"{where}.entry")
+        file_id = _file_id(item["file_id"], f"{where}.file_id") if "file_id" in item else 0
         if not _inside_assets(scene):
             raise _wrong(f"{where}.scene", _INSIDE_ASSETS, scene)
-        found.append(LockComponent(scene, gameobject, script, entry_name))
+        found.append(LockComponent(scene, gameobject, script, entry_name, file_id))
     return tuple(found)
 
 
-def _parse(text: str) -> tuple[dict[str, str], dict[str, str], tuple[LockComponent, ...]]:
-    """The lock's files, user files and components; raises ``_Malformed`` or ``ValueError``."""
+def _parse(text: str) -> LockFile:
+    """The lock in ``text``; raises ``_Malformed`` or ``ValueError``."""
     data = _object(json.loads(text), "the whole file")
     version = data.get("version", _MISSING)
     if type(version) is not int or version != LOCK_VERSION:
         raise _wrong("version", str(LOCK_VERSION), version)
-    return _asset_map(data, "files"), _asset_map(data, "user_files"), _components(data)
+    return LockFile(
+        _asset_map(data, "files"),
+        _asset_map(data, "user_files"),
+        _components(data),
+        _gameobjects(data),
+    )
 
 
 @dataclass(frozen=True, slots=True)
@@ -144,6 +193,11 @@ class LockFile:
     files: dict[str, str] = field(default_factory=dict)
     user_files: dict[str, str] = field(default_factory=dict)
     components: tuple[LockComponent, ...] = ()
+    gameobjects: tuple[LockGameObject, ...] = ()
+
+    def gameobjects_in(self, scene: str) -> dict[str, int]:
+        """Path -> fileID of the GameObjects recorded in ``scene``."""
+        return {g.path: g.file_id for g in self.gameobjects if g.scene == scene}
 
     @classmethod
     def read(cls, path: Path) -> LockFile:
@@ -155,7 +209,7 @@ class LockFile:
         except OSError as exc:
             raise UserError(f"cannot read {path}: {exc.strerror}") from None
         try:
-            files, user_files, components = _parse(data.decode("utf-8"))
+            return _parse(data.decode("utf-8"))
         except UnicodeDecodeError:
             detail = "it is not UTF-8 text"
         except json.JSONDecodeError as exc:
@@ -163,8 +217,6 @@ class LockFile:
             detail = f"invalid JSON at line {exc.lineno}, column {exc.colno} ({reason})"
         except _Malformed as exc:
             detail = exc.detail
-        else:
-            return cls(files, user_files, components)
         raise UserError(
             f"{path} is not a valid unityscaffold lock file: {detail}",
             hint="restore it from git, or delete it and run apply again to rebuild it "
@@ -184,8 +236,13 @@ class LockFile:
                     "gameobject": c.gameobject,
                     "script": c.script,
                     "entry": c.entry,
+                    **({"file_id": c.file_id} if c.file_id else {}),
                 }
                 for c in sorted(set(self.components))
             ],
+            "gameobjects": {
+                scene: {g.path: g.file_id for g in sorted(self.gameobjects) if g.scene == scene}
+                for scene in sorted({g.scene for g in self.gameobjects})
+            },
         }
         return json.dumps(data, indent=2, sort_keys=False, ensure_ascii=False) + "\n"

@@ -3,7 +3,9 @@ components, attached to their GameObjects through the surgical scene patcher.
 
 Components are recognised by GameObject + script, so a second run finds everything in place.
 Components an earlier apply attached (per the lock) that the manifest no longer asks for are
-removed. Scenes are only read and edited in memory here; writing happens in ``apply.run``.
+removed. GameObjects apply made or adopted are known by fileID (see ``_identity``): one renamed
+or moved in Unity is never created a second time. Scenes are only read and edited in memory
+here; writing happens in ``apply.run``.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan
+from unityscaffold.apply._identity import Moved, Named, moved_objects, now_at, report_moves
 from unityscaffold.apply._lock import LockComponent, LockFile
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._typed import check_names, typed_value
@@ -56,6 +59,8 @@ class ScenePlan:
     after: str
     edits: list[str] = field(default_factory=list)  # one line per change, for the summary
     components: list[LockComponent] = field(default_factory=list)
+    gameobjects: dict[str, int] = field(default_factory=dict)  # path -> fileID, for the lock
+    followed: list[Moved] = field(default_factory=list)  # manifest paths to rewrite
 
     @property
     def changed(self) -> bool:
@@ -71,18 +76,51 @@ _CREATE_HINT = (
 class _SceneEditor:
     """Applies the desired components to one loaded scene, recording what it did."""
 
-    def __init__(self, plan: ScenePlan, doc: SceneDocument, owned: set[tuple[str, str]]) -> None:
+    def __init__(
+        self,
+        plan: ScenePlan,
+        doc: SceneDocument,
+        owned: set[tuple[str, str]],
+        now: dict[str, str],
+    ) -> None:
         self.plan = plan
         self.doc = doc
         self.owned = owned  # (GameObject path, script GUID) of components an earlier apply added
+        self.now = now  # manifest path -> where that GameObject is now (--follow-renames)
         self.wanted: set[tuple[str, str]] = set()
+        self.attached: set[int] = set()  # fileIDs of the components the manifest asks for
+
+    def path(self, named: str) -> str:
+        """Where the GameObject the manifest calls ``named`` is (renames followed)."""
+        return self.now.get(named, named)
 
     def gameobject(self, path: str, create: bool, where: SourceLocation) -> GameObject:
+        path = self.path(path)
         with located_at(where):
             try:
-                return self.doc.ensure_gameobject(path, create=create)
+                go = self.doc.ensure_gameobject(path, create=create)
             except GameObjectNotFound as error:
                 raise UserError(error.message, hint=_CREATE_HINT) from None
+        self.record(go)
+        return go
+
+    def find(self, path: str, where: SourceLocation) -> GameObject:
+        """A GameObject a field refers to; recorded too, so that a rename of it is caught."""
+        with located_at(where):
+            go = self.doc.find_gameobject(self.path(path))
+        self.record(go)
+        return go
+
+    def record(self, go: GameObject) -> None:
+        """Remember the fileIDs of ``go`` and of every GameObject on its path."""
+        if go.path in self.plan.gameobjects:
+            return
+        names = go.path.split("/")
+        for level in range(1, len(names) + 1):
+            prefix = "/".join(names[:level])
+            if prefix not in self.plan.gameobjects:
+                found = go if level == len(names) else self.doc.find_gameobject(prefix)
+                self.plan.gameobjects[prefix] = found.file_id
 
     def attach(
         self,
@@ -94,36 +132,63 @@ class _SceneEditor:
         entry: str,
     ) -> SceneComponent:
         go = self.gameobject(path, create, where)
+        path = go.path
         self.wanted.add((path, script.guid))
         existed = self.doc.find_component(go, script.guid, script.file_id) is not None
         revision = self.doc.revision
         with located_at(where):
             component = self.doc.ensure_component(go, script, fields)
+        self.attached.add(component.file_id)
         name = script.class_name or script.guid
         added = f"add {name} to {path}"
-        if not existed:
+        if not existed and (path, script.guid) in self.owned:
+            readded = f"re-add {name} to {path} (removed in Unity since the last apply)"
+            if readded not in self.plan.edits:
+                self.plan.edits.append(readded)
+        elif not existed:
             self.plan.edits.append(added)
-        elif self.doc.revision != revision and added not in self.plan.edits:
+        elif self.doc.revision != revision and not _added_here(self.plan.edits, name, path):
             self.plan.edits.append(f"update {name} on {path}")
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
         if not existed:
             self.owned.add((path, script.guid))
         if (path, script.guid) in self.owned:
-            self.plan.components.append(LockComponent(self.plan.relative, path, script.guid, entry))
+            self.plan.components.append(
+                LockComponent(self.plan.relative, path, script.guid, entry, component.file_id)
+            )
         return component
 
     def prune(self, previous: Iterable[LockComponent], keep: set[tuple[str, str]]) -> None:
         for old in previous:
-            if old.scene != self.plan.relative or (old.gameobject, old.script) in keep:
+            if old.scene != self.plan.relative:
                 continue
-            try:
-                go = self.doc.find_gameobject(old.gameobject)
-            except UserError:
-                continue  # the GameObject is gone already: nothing to remove
-            component = self.doc.find_component(go, old.script)
-            if component is not None and self.doc.remove_component(component):
+            component = self._recorded(old)
+            if component is None or component.file_id in self.attached:
+                continue
+            if (self.doc.hierarchy.paths.get(component.gameobject_id), old.script) in keep:
+                continue
+            if self.doc.remove_component(component):
                 self.plan.edits.append(f"remove {old.entry or old.script} from {old.gameobject}")
+
+    def _recorded(self, old: LockComponent) -> SceneComponent | None:
+        """The component a lock entry names: by fileID, or by path for a lock without them."""
+        if old.file_id:
+            if self.doc.document(old.file_id) is None:
+                return None  # removed in Unity already: nothing to remove
+            found = self.doc.component(old.file_id)
+            return found if found.script and found.script.guid == old.script else None
+        try:
+            go = self.doc.find_gameobject(self.path(old.gameobject))
+        except UserError:
+            return None  # the GameObject is gone already: nothing to remove
+        return self.doc.find_component(go, old.script)
+
+
+def _added_here(edits: list[str], name: str, path: str) -> bool:
+    return f"add {name} to {path}" in edits or any(
+        e.startswith(f"re-add {name} to {path} ") for e in edits
+    )
 
 
 def _connector_fields(manifest: Manifest) -> list[tuple[str, FieldValue]]:
@@ -144,6 +209,7 @@ class _Context:
     rossharp: RosSharp
     scripts: dict[str, ScriptInfo]
     rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
+    follow_renames: bool = False
 
     def planned(self, class_name: str) -> ScriptRef | None:
         """A script this plan generates: known by name before its file exists on disk."""
@@ -196,10 +262,10 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
 
 
 def _reference(
-    ctx: _Context, doc: SceneDocument, name: str, value: ObjectPath, where: SourceLocation
+    ctx: _Context, editor: _SceneEditor, name: str, value: ObjectPath, where: SourceLocation
 ) -> ObjectRef:
-    with located_at(where):
-        go = doc.find_gameobject(value.path)
+    doc = editor.doc
+    go = editor.find(value.path, where)
     wanted = value.component or ("Transform" if name.lower().endswith("transform") else None)
     if wanted is None:
         return ObjectRef(go.file_id)
@@ -217,14 +283,14 @@ def _reference(
 
 
 def _value(
-    ctx: _Context, doc: SceneDocument, name: str, value: object, where: SourceLocation
+    ctx: _Context, editor: _SceneEditor, name: str, value: object, where: SourceLocation
 ) -> FieldValue:
     if isinstance(value, ObjectPath):
-        return _reference(ctx, doc, name, value, where)
+        return _reference(ctx, editor, name, value, where)
     if isinstance(value, StructValue):
-        return {k: _value(ctx, doc, k, v, where) for k, v in value.items}
+        return {k: _value(ctx, editor, k, v, where) for k, v in value.items}
     if isinstance(value, tuple):
-        return [_value(ctx, doc, name, v, where) for v in value]
+        return [_value(ctx, editor, name, v, where) for v in value]
     return value  # type: ignore[return-value]
 
 
@@ -258,13 +324,13 @@ def _fits(ctx: _Context, comp: SceneComponent, wanted: str) -> bool:
 
 
 def _typed_reference(
-    ctx: _Context, doc: SceneDocument, value: ObjectPath, declared: str, where: SourceLocation
+    ctx: _Context, editor: _SceneEditor, value: ObjectPath, declared: str, where: SourceLocation
 ) -> ObjectRef:
     """``@Path`` (or ``@Path:Class``) for a field declared as ``declared``: the GameObject, its
     transform, or the one component on it that fits."""
     wanted = declared.rsplit(".", 1)[-1]
-    with located_at(where):
-        go = doc.find_gameobject(value.path)
+    doc = editor.doc
+    go = editor.find(value.path, where)
     if wanted == "GameObject" and value.component is None:
         return ObjectRef(go.file_id)
     comps = doc.components_of(go)
@@ -294,7 +360,7 @@ def _label(ctx: _Context, comp: SceneComponent) -> str:
 
 
 def _catalog_values(
-    ctx: _Context, doc: SceneDocument, facts: CatalogScript, entry: Component, references: bool
+    ctx: _Context, editor: _SceneEditor, facts: CatalogScript, entry: Component, references: bool
 ) -> list[tuple[str, FieldValue]]:
     """The entry's field values checked against the ROS# class; references only if asked."""
     enums = rossharp_catalog().enums
@@ -306,7 +372,7 @@ def _catalog_values(
             continue
 
         def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
-            return _typed_reference(ctx, doc, path, declared, where)
+            return _typed_reference(ctx, editor, path, declared, where)
 
         values.append(
             (item.name, typed_value(kind, item.value, item.location, item.name, enums, resolve))
@@ -318,7 +384,7 @@ def _requirements(
     editor: _SceneEditor, ctx: _Context, facts: CatalogScript, entry: Component
 ) -> None:
     """Notes for [RequireComponent]s other than RosConnector that are not on the GameObject."""
-    go = editor.doc.find_gameobject(entry.gameobject)
+    go = editor.doc.find_gameobject(editor.path(entry.gameobject))
     comps = editor.doc.components_of(go)
     for required in facts.requires:
         if required == "RosConnector" or any(_fits(ctx, c, required) for c in comps):
@@ -329,10 +395,64 @@ def _requirements(
         )
 
 
+def _named(ctx: _Context, scene: str) -> list[Named]:
+    """Every GameObject path the manifest names in ``scene``, where it names it."""
+    m = ctx.manifest
+    found = []
+    if m.connector.scene == scene:
+        found.append(Named(m.connector.gameobject, m.connector.locations.of("gameobject")))
+    for script in ctx.code.scripts:
+        if script.item.scene == scene:
+            found.append(Named(script.item.gameobject, script.item.locations.of("gameobject")))
+    for entry in m.components:
+        if entry.scene != scene:
+            continue
+        found.append(Named(entry.gameobject, entry.locations.of("gameobject")))
+        for item in entry.fields:
+            found += [Named(p, item.location, True) for p in _paths_in(item.value)]
+    return found
+
+
+def _paths_in(value: object) -> Iterable[str]:
+    if isinstance(value, ObjectPath):
+        yield value.path
+    elif isinstance(value, StructValue):
+        for _, item in value.items:
+            yield from _paths_in(item)
+    elif isinstance(value, tuple):
+        for item in value:
+            yield from _paths_in(item)
+
+
+def _follow(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> dict[str, str]:
+    """Manifest path -> where its GameObject is now, for the ones Unity renamed or moved.
+
+    Without ``--follow-renames`` any such path stops apply with the lines to change.
+    """
+    moves = moved_objects(doc, lock.gameobjects_in(plan.relative))
+    if not moves:
+        return {}
+    moved = [
+        Moved(named, now)
+        for named in _named(ctx, plan.relative)
+        if (now := now_at(named.path, moves)) is not None
+    ]
+    if moved and not ctx.follow_renames:
+        raise report_moves(plan.relative, moved)
+    plan.followed += moved
+    return {m.named.path: m.now for m in moved}
+
+
 def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
     m = ctx.manifest
-    owned = {(c.gameobject, c.script) for c in lock.components if c.scene == plan.relative}
-    editor = _SceneEditor(plan, doc, owned)
+    now = _follow(ctx, plan, doc, lock)
+    moves = moved_objects(doc, lock.gameobjects_in(plan.relative))
+    owned = {
+        (now_at(c.gameobject, moves) or c.gameobject, c.script)
+        for c in lock.components
+        if c.scene == plan.relative
+    }
+    editor = _SceneEditor(plan, doc, owned, now)
     connector_id = 0
     connector_script = None
     scripts = {id(c): _component_script(ctx, c) for c in m.components if c.scene == plan.relative}
@@ -397,17 +517,19 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
                 f"connector for {entry.script}",
             )
         if facts is None:
-            values = [(f.name, _value(ctx, doc, f.name, f.value, f.location)) for f in entry.fields]
+            values = [
+                (f.name, _value(ctx, editor, f.name, f.value, f.location)) for f in entry.fields
+            ]
         else:
             # References are set once every component is there: a field may name one that a
             # later entry attaches.
-            values = _catalog_values(ctx, doc, facts, entry, references=False)
+            values = _catalog_values(ctx, editor, facts, entry, references=False)
             deferred.append((entry, ref, facts, where))
         editor.attach(
             entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
         )
     for entry, ref, facts, where in deferred:
-        values = _catalog_values(ctx, doc, facts, entry, references=True)
+        values = _catalog_values(ctx, editor, facts, entry, references=True)
         editor.attach(
             entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
         )
@@ -450,9 +572,11 @@ def plan_scenes(
     rossharp: RosSharp,
     scripts: dict[str, ScriptInfo],
     lock: LockFile,
+    *,
+    follow_renames: bool = False,
 ) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
-    ctx = _Context(manifest, code, rossharp, scripts, rossharp.class_names())
+    ctx = _Context(manifest, code, rossharp, scripts, rossharp.class_names(), follow_renames)
     named = _scene_locations(manifest)
     locations = dict(named)
     for old in lock.components:

@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan, plan_code
-from unityscaffold.apply._lock import LockFile, lock_path, recorded, sha256
+from unityscaffold.apply._identity import follow_in_manifest
+from unityscaffold.apply._lock import LockFile, LockGameObject, lock_path, recorded, sha256
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
@@ -114,7 +115,18 @@ def _check_inside(project: Path, paths: list[Path]) -> None:
             )
 
 
-def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) -> Plan:
+def _followed_manifest(manifest: Manifest, scenes: list[ScenePlan]) -> list[DesiredFile]:
+    """The manifest with the paths of GameObjects renamed in Unity rewritten (--follow-renames)."""
+    moved = [m for s in scenes for m in s.followed]
+    if not moved:
+        return []
+    text = manifest.path.read_text(encoding="utf-8")
+    return [DesiredFile(manifest.path, follow_in_manifest(text, moved).encode("utf-8"))]
+
+
+def make_plan(
+    manifest: Manifest, registry: Registry, *, force: bool = False, follow_renames: bool = False
+) -> Plan:
     """Compute everything ``apply`` would do; raises ``UserError`` for bad input."""
     project = manifest.project_root
     if not (project / "Assets").is_dir():
@@ -129,7 +141,7 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
     scripts = metas.scripts
     code: CodePlan = plan_code(manifest, registry, salt, scripts)
     rossharp = RosSharp.of(project, scripts)
-    scenes = plan_scenes(manifest, code, rossharp, scripts, lock)
+    scenes = plan_scenes(manifest, code, rossharp, scripts, lock, follow_renames=follow_renames)
 
     generated = list(code.generated)
     conflicts = [] if force else _conflicts(manifest, generated, lock)
@@ -149,8 +161,14 @@ def make_plan(manifest: Manifest, registry: Registry, *, force: bool = False) ->
         },
         user_files={**pruning.kept_user_files, **user.digests},
         components=tuple(sorted({c for s in scenes for c in s.components})),
+        gameobjects=tuple(
+            LockGameObject(s.relative, path, file_id)
+            for s in scenes
+            for path, file_id in sorted(s.gameobjects.items())
+        ),
     )
     _check_inside(project, [d.path for d in desired] + deletions)
+    desired += _followed_manifest(manifest, scenes)
     desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
     changes = plan_files(desired)
     return Plan(

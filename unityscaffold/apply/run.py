@@ -48,12 +48,20 @@ def load_registry(manifest: Manifest, *, use_environment: bool) -> Registry:
 
 
 def run(
-    manifest_path: Path, mode: Mode, *, force: bool = False, use_environment: bool = False
+    manifest_path: Path,
+    mode: Mode,
+    *,
+    force: bool = False,
+    use_environment: bool = False,
+    follow_renames: bool = False,
 ) -> Outcome:
     """Plan the manifest's project, then show (PLAN), compare (CHECK) or write (APPLY) it."""
     manifest = load_manifest(manifest_path)
     plan = make_plan(
-        manifest, load_registry(manifest, use_environment=use_environment), force=force
+        manifest,
+        load_registry(manifest, use_environment=use_environment),
+        force=force,
+        follow_renames=follow_renames,
     )
     outcome = Outcome(mode, plan)
     if mode is not Mode.APPLY:

@@ -73,6 +73,13 @@ def register(app: typer.Typer) -> None:
             "-q",
             help="Print only errors (with --check: one line on stderr when the project differs).",
         ),
+        follow_renames: bool = typer.Option(
+            False,
+            "--follow-renames",
+            help="A GameObject apply made or used that was renamed or moved in Unity since: "
+            "keep using it where it is now and rewrite the manifest's lines to its new path. "
+            "Without it apply stops and names those lines (it never creates a second one).",
+        ),
         ros_env: bool = RosEnvOption,
         as_json: bool = JsonOption,
     ) -> None:
@@ -80,9 +87,13 @@ def register(app: typer.Typer) -> None:
 
         Running it again changes nothing. Generated files edited by hand stop it (see --force);
         your code belongs in the *.User.cs files, which are created once and never rewritten.
+        GameObjects are known by identity: one renamed or moved in Unity stops apply with the
+        manifest lines to change (see --follow-renames).
         """
         mode = Mode.CHECK if check else Mode.PLAN if dry_run else Mode.APPLY
-        outcome = run(manifest, mode, force=force, use_environment=ros_env)
+        outcome = run(
+            manifest, mode, force=force, use_environment=ros_env, follow_renames=follow_renames
+        )
         _show(outcome, quiet=quiet, as_json=as_json, diff=dry_run)
         if mode is Mode.CHECK and not (outcome.plan.in_sync and not outcome.plan.conflicts):
             if not as_json:
