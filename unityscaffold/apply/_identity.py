@@ -21,7 +21,7 @@ from unityscaffold.unity import SceneDocument
 
 __all__ = ["Moved", "Named", "follow_in_manifest", "moved_objects", "now_at", "report_moves"]
 
-FOLLOW_FLAG = "--follow-renames"
+_FOLLOW = "apply --follow-renames"
 
 
 @dataclass(frozen=True, slots=True)
@@ -74,7 +74,7 @@ def report_moves(scene: str, moved: list[Moved]) -> LocatedError:
                 named[0].location,
                 f"`{old}` is now `{new}` in {PurePosixPath(scene).name} (renamed or moved in "
                 f"Unity since the last apply); rename it at {lines}",
-                hint=f"change the manifest to `{new}`, or run apply {FOLLOW_FLAG} to have apply "
+                hint=f"change the manifest to `{new}`, or run {_FOLLOW} to have apply "
                 f"do it; apply never creates a second `{old}` beside the one it made",
             )
         )
@@ -141,7 +141,7 @@ def _follow_reference(tail: str, item: Moved) -> str | None:
 def _cannot_follow(item: Moved) -> UserError:
     return LocatedError.at(
         item.named.location,
-        f"`{item.named.path}` is now `{item.now}`, and {FOLLOW_FLAG} cannot rewrite this line "
+        f"`{item.named.path}` is now `{item.now}`, and {_FOLLOW} cannot rewrite this line "
         "by itself",
         hint=f"change it to `{item.now}` by hand",
     )
