@@ -17,7 +17,7 @@ from contextlib import contextmanager
 from typing import Any
 
 from websockets.exceptions import ConnectionClosed
-from websockets.sync.server import Server, ServerConnection, serve
+from websockets.sync.server import ServerConnection, serve
 
 TOPICS = {  # name: (type, publishers, subscribers)
     "/chatter": ("std_msgs/String", ["/talker"], []),
@@ -39,7 +39,8 @@ class FakeRosbridge:
         self.truth = truth
         self.faults: dict[str, str] = {}
         self.calls: list[str] = []
-        self._server: Server | None = None
+        # websockets.sync.server.Server (named WebSocketServer before websockets 13)
+        self._server: Any = None
 
     @property
     def url(self) -> str:
