@@ -122,9 +122,9 @@ def _assert_located_in(error: LocatedError, text: str) -> None:
     for diagnostic in error.diagnostics:
         where = diagnostic.location
         assert where.path == str(PATH)
-        if (where.line, where.col) == (0, 0):
-            continue  # about the whole file (empty, nested too deeply)
-        assert 1 <= where.line <= len(lines) + 1, diagnostic.render()
+        # every refusal has a place, even one about the whole file (empty, nested too deeply)
+        assert where.line >= 1 and where.col >= 1, diagnostic.render()
+        assert where.line <= len(lines) + 1, diagnostic.render()
         if where.source_line is not None and where.line <= len(lines):
             assert where.source_line == lines[where.line - 1], diagnostic.render()
 

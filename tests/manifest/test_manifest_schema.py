@@ -48,6 +48,7 @@ SCHEMA_REJECTS = [
     "number_for_text",
     "boolean_written_yes",
     "component_empty_field_value",
+    "numbers_past_csharp_types",
 ]
 
 

@@ -12,7 +12,7 @@ import re
 from collections.abc import Sequence
 
 from unityscaffold.errors import Diagnostic, DiagnosticSink, SourceLocation
-from unityscaffold.manifest._spec import Section
+from unityscaffold.manifest._spec import FLOAT32_MAX, FLOAT32_TINY, INT32_MAX, Section
 from unityscaffold.manifest._yaml import YEntry, YMap, YNode, YScalar, YSeq
 
 __all__ = ["Reader", "describe", "one_of"]
@@ -136,12 +136,21 @@ class Reader:
         return value if isinstance(value, bool) else None
 
     def integer(self, m: YMap, key: str, minimum: int, unit: str = "") -> int | None:
-        expected = f"a whole number{' of ' + unit if unit else ''} ≥ {minimum}"
+        """A whole number from ``minimum`` up to what the C# ``int`` it is written to holds."""
+        of = f" of {unit}" if unit else ""
+        expected = f"a whole number{of} ≥ {minimum}"
         value = self.scalar(m, key, (int,), expected)
         if not isinstance(value, int):
             return None
         if value < minimum:
             self.invalid(m.get(key), expected)  # type: ignore[arg-type]
+            return None
+        if value > INT32_MAX:
+            self.invalid(
+                m.get(key),  # type: ignore[arg-type]
+                f"a whole number{of} from {minimum} to {INT32_MAX}",
+                hint=f"'{key}' goes into a C# int field, which holds at most {INT32_MAX}",
+            )
             return None
         return value
 
@@ -152,6 +161,13 @@ class Reader:
             return None
         if not value > 0 or value == float("inf"):
             self.invalid(m.get(key), expected)  # type: ignore[arg-type]
+            return None
+        if not FLOAT32_TINY <= value <= FLOAT32_MAX:
+            self.invalid(
+                m.get(key),  # type: ignore[arg-type]
+                f"a number of {unit} from {FLOAT32_TINY:g} to {FLOAT32_MAX:g}",
+                hint=f"'{key}' goes into a C# float field, which cannot hold it",
+            )
             return None
         return float(value)
 

@@ -33,6 +33,10 @@ NAMESPACE = f"^{CSHARP_IDENTIFIER}([.]{CSHARP_IDENTIFIER})*$"
 GAMEOBJECT = "^[^/]+(/[^/]+)*$"
 SCENE = "[.]unity$"
 URL = "^wss?://[^\\s/]+(/\\S*)?$"
+#: The largest C# ``int``: timeout, throttle and queue become int fields in C#.
+INT32_MAX = 2**31 - 1
+#: The positive range of a C# ``float`` (rate): its smallest normal value and its largest.
+FLOAT32_TINY, FLOAT32_MAX = 1.1754943508222875e-38, 3.4028234663852886e38
 
 NO_DEFAULT = object()
 DEFAULT_TIMEOUT = 10
@@ -227,7 +231,7 @@ CONNECTOR = Section(
         Key(
             "timeout",
             "Connection timeout in seconds (`SecondsTimeout`).",
-            {"type": "integer", "minimum": 1},
+            {"type": "integer", "minimum": 1, "maximum": INT32_MAX},
             default=DEFAULT_TIMEOUT,
         ),
         Key(
@@ -274,15 +278,17 @@ TOPIC = Section(
         Key(
             "rate",
             "Publish only: messages per second (Hz). Absent: publish on demand.",
-            {"type": "number", "exclusiveMinimum": 0},
+            {"type": "number", "minimum": FLOAT32_TINY, "maximum": FLOAT32_MAX},
         ),
         Key(
             "throttle",
             "Subscribe only: minimum milliseconds between messages (rosbridge `throttle_rate`).",
-            {"type": "integer", "minimum": 0},
+            {"type": "integer", "minimum": 0, "maximum": INT32_MAX},
         ),
         Key(
-            "queue", "Subscribe only: rosbridge `queue_length`.", {"type": "integer", "minimum": 1}
+            "queue",
+            "Subscribe only: rosbridge `queue_length`.",
+            {"type": "integer", "minimum": 1, "maximum": INT32_MAX},
         ),
         _CLASS,
     ),

@@ -12,6 +12,12 @@ from dataclasses import dataclass
 
 from ruamel.yaml import YAML
 from ruamel.yaml.error import MarkedYAMLError, YAMLError
+from ruamel.yaml.events import (
+    MappingEndEvent,
+    MappingStartEvent,
+    SequenceEndEvent,
+    SequenceStartEvent,
+)
 from ruamel.yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
 from ruamel.yaml.reader import ReaderError
 
@@ -83,13 +89,42 @@ def compose(text: str, path: str) -> YNode | None:
     except YAMLError as exc:
         raise LocatedError.at(SourceLocation(path), f"invalid YAML: {exc}") from None
     except RecursionError:
-        raise LocatedError.at(SourceLocation(path), "the YAML is nested too deeply") from None
+        raise _too_deep(text, path, lines) from None
     if node is None:
         return None
     try:
         return _Converter(path, lines, yaml).convert(node)
     except RecursionError:
-        raise LocatedError.at(SourceLocation(path), "the YAML is nested too deeply") from None
+        raise _too_deep(text, path, lines) from None
+
+
+# Far deeper than any manifest (which needs about five levels), far below where ruamel's
+# recursive composer runs out of stack.
+_MAX_DEPTH = 100
+
+
+def _too_deep(text: str, path: str, lines: list[str]) -> LocatedError:
+    """The error for a document too deep to compose, at the list or mapping that goes past
+    ``_MAX_DEPTH`` levels. Only reached after a ``RecursionError``: the event parser is not
+    recursive, so reading the events again finds the place at no cost to valid manifests."""
+    depth, where = 0, SourceLocation(path, 1, 1, lines[0] if lines else "")
+    try:
+        for event in YAML(typ="safe", pure=True).parse(text):
+            if isinstance(event, (MappingStartEvent, SequenceStartEvent)):
+                depth += 1
+                if depth > _MAX_DEPTH:
+                    mark = event.start_mark
+                    where = _location(path, lines, mark.line, mark.column)
+                    break
+            elif isinstance(event, (MappingEndEvent, SequenceEndEvent)):
+                depth -= 1
+    except YAMLError:
+        pass  # the place found so far is the best there is
+    return LocatedError.at(
+        where,
+        f"the YAML is nested more than {_MAX_DEPTH} levels deep",
+        hint="a manifest needs a few levels: look for runaway brackets or indentation here",
+    )
 
 
 def _syntax_error(exc: MarkedYAMLError, path: str, lines: list[str]) -> LocatedError:

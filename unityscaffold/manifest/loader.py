@@ -56,13 +56,22 @@ def load_manifest(path: Path) -> Manifest:
     try:
         text = raw.decode("utf-8-sig")  # an editor's BOM is harmless
     except UnicodeDecodeError as exc:
-        line = raw[: exc.start].count(b"\n") + 1
         raise LocatedError.at(
-            SourceLocation(str(path), line),
-            "the manifest is not UTF-8 text",
+            _byte_location(str(path), raw, exc.start),
+            f"the manifest is not UTF-8 text (byte 0x{raw[exc.start]:02x})",
             hint="save it as UTF-8",
         ) from None
     return parse_manifest(text, Path(path))
+
+
+def _byte_location(path: str, raw: bytes, offset: int) -> SourceLocation:
+    """Line and column (in characters) of the byte at ``offset``; the line is shown with
+    undecodable bytes replaced."""
+    start = raw.rfind(b"\n", 0, offset) + 1
+    end = raw.find(b"\n", offset)
+    before = raw[start:offset].decode("utf-8", "replace")
+    source = raw[start : end if end >= 0 else len(raw)].decode("utf-8", "replace")
+    return SourceLocation(path, raw.count(b"\n", 0, offset) + 1, len(before) + 1, source)
 
 
 def parse_manifest(text: str, path: Path) -> Manifest:
@@ -70,8 +79,9 @@ def parse_manifest(text: str, path: Path) -> Manifest:
     shown = str(path)
     root = compose(text, shown)
     if root is None or (isinstance(root, YScalar) and root.value is None):
+        first = next(iter(text.splitlines()), "")
         raise LocatedError.at(
-            SourceLocation(shown),
+            SourceLocation(shown, 1, 1, first),
             "the manifest is empty",
             expected="a mapping with at least 'version' and 'ros'",
             hint="start from the template that 'scaffold init' writes",
