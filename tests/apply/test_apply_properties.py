@@ -1,0 +1,157 @@
+"""Property: every apply that succeeds is a fixed point, whatever the layout.
+
+Random valid manifests on a fresh ``init`` project (ROS 2, no ``Library/``): topics and services
+on new, existing and connector GameObjects, and ROS#'s stock scripts from the catalog with
+fields of every kind set, references included. After ``apply``, ``apply --check`` exits 0 and a
+second ``apply`` writes nothing. Derandomized, so CI sees the same examples on every run.
+"""
+
+from __future__ import annotations
+
+import shutil
+import tempfile
+from pathlib import Path
+
+import pytest
+from helpers import run_cli
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from unityscaffold.unity.catalog import CatalogField, CatalogScript, rossharp_catalog
+
+CATALOG = rossharp_catalog()
+STOCK = [s for s in CATALOG.scripts if s.attachable]
+TOPIC_TYPES = [
+    "std_msgs/msg/String",
+    "geometry_msgs/msg/Twist",
+    "sensor_msgs/msg/Imu",
+    "nav_msgs/msg/Odometry",
+]
+# New paths (created by apply, parents included), objects the init scene has, and the
+# connector's own GameObject (chosen per manifest among these).
+NEW = ["Robot", "Robot/Base", "Robot/Base/Lidar", "Arm/Link1"]
+EXISTING = ["Main Camera", "Directional Light"]
+CONNECTOR = ["RosConnector", "Robot", "Main Camera"]
+_SCALARS = {
+    "int": st.integers(-1000, 1000).map(str),
+    "float": st.sampled_from(["0", "0.25", "-3.5", "1e-3", "100"]),
+    "bool": st.sampled_from(["true", "false"]),
+    "string": st.sampled_from(["/topic", "a b", "''", "'#x: y'", '"q\\"uote"']),
+}
+_STRUCTS = {
+    "Vector2": "{x: 1, y: -2}",
+    "Vector3": "{x: 0.5, y: 0, z: -1}",
+    "Quaternion": "{x: 0, y: 0, z: 0, w: 1}",
+    "Color": "{r: 1, g: 0.5, b: 0, a: 1}",
+}
+
+
+@pytest.fixture(scope="module")
+def fresh(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    root = tmp_path_factory.mktemp("fresh") / "p"
+    assert run_cli("init", str(root), "--ros", "2").code == 0
+    assert not (root / "Library").exists()
+    return root
+
+
+def _field_value(field: CatalogField, targets: list[str]) -> st.SearchStrategy[str] | None:
+    """A strategy for a manifest value of ``field`` (None: a kind not drawn here)."""
+    kind = field.unity.removesuffix("[]")
+    one: st.SearchStrategy[str] | None
+    if kind in _SCALARS:
+        one = _SCALARS[kind]
+    elif kind in _STRUCTS:
+        one = st.just(_STRUCTS[kind])
+    elif kind.startswith("enum:"):
+        one = st.sampled_from(sorted(CATALOG.enums[kind[5:]]))
+    elif kind in ("ref:Transform", "ref:GameObject"):
+        one = st.sampled_from(targets).map(lambda p: f'"@{p}"')
+    else:
+        return None  # a reference to a component: covered by test_rossharp_scripts
+    if field.unity.endswith("[]"):
+        return st.lists(one, max_size=2).map(lambda items: "[" + ", ".join(items) + "]")
+    return one
+
+
+@st.composite
+def manifests(draw: st.DrawFn) -> str:
+    connector = draw(st.sampled_from(CONNECTOR))
+    places = st.sampled_from([*NEW, *EXISTING, connector])
+    lines = [
+        "version: 1",
+        "ros: 2",
+        "project: .",
+        "scene: Assets/Scenes/Main.unity",
+        f"connector: {{gameobject: {connector}}}",
+    ]
+    used = {connector}
+    topics = draw(st.lists(st.sampled_from(TOPIC_TYPES), max_size=3))
+    if topics:
+        lines.append("topics:")
+    for index, type_name in enumerate(topics):
+        place = draw(places)
+        used.add(place)
+        direction = draw(st.sampled_from(["publish", "subscribe"]))
+        lines.append(
+            f"  - {{name: /t{index}, type: {type_name}, direction: {direction}, "
+            f'gameobject: "{place}", create: true}}'
+        )
+    if draw(st.booleans()):
+        place = draw(places)
+        used.add(place)
+        role = draw(st.sampled_from(["client", "server"]))
+        lines += [
+            "services:",
+            f'  - {{name: /reset, type: std_srvs/srv/Trigger, role: {role}, gameobject: "{place}",'
+            " create: true}",
+        ]
+    stock = draw(st.lists(st.tuples(st.sampled_from(STOCK), places), max_size=3, unique=True))
+    stock = list({(s.class_name, p): (s, p) for s, p in stock}.values())
+    used |= {p for _, p in stock}
+    targets = sorted(used | set(EXISTING))
+    if stock:
+        lines.append("components:")
+    for script, place in stock:
+        lines += [
+            f"  - script: {script.class_name}",
+            f'    gameobject: "{place}"',
+            "    create: true",
+        ]
+        fields = _fields(draw, script, targets)
+        if fields:
+            lines.append("    fields: {" + ", ".join(fields) + "}")
+    return "\n".join(lines) + "\n"
+
+
+def _fields(draw: st.DrawFn, script: CatalogScript, targets: list[str]) -> list[str]:
+    chosen = draw(st.lists(st.sampled_from(script.fields), unique=True)) if script.fields else []
+    found = []
+    for field in chosen:
+        strategy = _field_value(field, targets)
+        if strategy is not None:
+            found.append(f"{field.name}: {draw(strategy)}")
+    return found
+
+
+@settings(
+    max_examples=50,
+    deadline=None,
+    derandomize=True,
+    database=None,
+    suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
+)
+@given(manifest=manifests())
+def test_every_successful_apply_is_a_fixed_point(fresh: Path, manifest: str) -> None:
+    with tempfile.TemporaryDirectory() as folder:
+        project = Path(folder) / "p"
+        shutil.copytree(fresh, project)
+        path = project / "robot.yaml"
+        path.write_text(manifest)
+        first = run_cli("apply", str(path))
+        assert first.code == 0, manifest + first.err
+        check = run_cli("apply", "--check", str(path))
+        assert check.code == 0, manifest + check.out + check.err
+        again = run_cli("apply", str(path))
+        assert again.code == 0 and again.out.endswith("wrote 0 files, removed 0\n"), (
+            manifest + again.out
+        )
