@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan
+from unityscaffold.apply._facts import ScriptFacts
 from unityscaffold.apply._identity import Moved, Named, moved_objects, now_at, report_moves
 from unityscaffold.apply._lock import LockComponent, LockFile
 from unityscaffold.apply._rossharp import RosSharp
@@ -209,6 +210,7 @@ class _Context:
     rossharp: RosSharp
     scripts: dict[str, ScriptInfo]
     rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
+    known: ScriptFacts
     follow_renames: bool = False
 
     def planned(self, class_name: str) -> ScriptRef | None:
@@ -228,9 +230,10 @@ class _Context:
         return info.class_name if info else self.rossharp_names.get(guid)
 
     def facts(self, script: ScriptRef) -> CatalogScript | None:
-        """The catalog's facts about a ROS# script (None for any other script)."""
-        name = self.rossharp_names.get(script.guid)
-        return self.rossharp.facts(name) if name else None
+        """What a ROS# or project script declares (None for a generated or unreadable one)."""
+        if any(s.guid == script.guid for s in self.code.scripts):
+            return None  # apply writes a generated script's fields itself
+        return self.known.of(script.guid)
 
 
 def _component_script(ctx: _Context, item: Component) -> ScriptRef:
@@ -362,12 +365,22 @@ def _label(ctx: _Context, comp: SceneComponent) -> str:
 def _catalog_values(
     ctx: _Context, editor: _SceneEditor, facts: CatalogScript, entry: Component, references: bool
 ) -> list[tuple[str, FieldValue]]:
-    """The entry's field values checked against the ROS# class; references only if asked."""
-    enums = rossharp_catalog().enums
+    """The entry's field values checked against the script's class; references only if asked.
+
+    A field of a type the reader could not place (``raw:``) is written as given, as for a
+    script without facts.
+    """
+    enums = ctx.known.enums
     kinds = {f.name: f.unity for f in facts.fields}
     values = []
     for item in entry.fields:
         kind = kinds[item.name]
+        if kind.startswith("raw:"):
+            if references or not any(True for _ in _paths_in(item.value)):
+                values.append(
+                    (item.name, _value(ctx, editor, item.name, item.value, item.location))
+                )
+            continue
         if "ref:" in kind and not references:
             continue
 
@@ -576,7 +589,9 @@ def plan_scenes(
     follow_renames: bool = False,
 ) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
-    ctx = _Context(manifest, code, rossharp, scripts, rossharp.class_names(), follow_renames)
+    names = rossharp.class_names()
+    known = ScriptFacts(manifest.project_root, rossharp, scripts, names)
+    ctx = _Context(manifest, code, rossharp, scripts, names, known, follow_renames)
     named = _scene_locations(manifest)
     locations = dict(named)
     for old in lock.components:

@@ -1,0 +1,62 @@
+"""What each script a manifest names declares, wherever it comes from: ROS#'s from the catalog,
+the project's own from their ``.cs`` (read once per run), generated ones not at all (apply
+writes their fields itself)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
+from unityscaffold.unity.project import ScriptInfo
+from unityscaffold.unity.scriptfacts import ProjectFacts, read_script_facts
+
+__all__ = ["ScriptFacts"]
+
+
+@dataclass(slots=True)
+class ScriptFacts:
+    root: Path
+    rossharp: RosSharp
+    scripts: dict[str, ScriptInfo]  # GUID -> the project's scripts
+    rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
+    enums: dict[str, dict[str, int]] = field(default_factory=dict)
+    _read: dict[str, ProjectFacts | None] = field(default_factory=dict)
+    _by_name: dict[str, list[ScriptInfo]] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        self.enums.update(rossharp_catalog().enums)
+        for info in self.scripts.values():
+            if info.guid not in self.rossharp_names:
+                self._by_name.setdefault(info.class_name, []).append(info)
+
+    def of(self, guid: str) -> CatalogScript | None:
+        """The facts of the script with ``guid`` (None for a generated or unreadable one)."""
+        name = self.rossharp_names.get(guid)
+        if name is not None:
+            return self.rossharp.facts(name)
+        info = self.scripts.get(guid)
+        found = self._project(info) if info is not None else None
+        return found.script if found is not None else None
+
+    def _project(self, info: ScriptInfo) -> ProjectFacts | None:
+        if info.guid not in self._read:
+            self._read[info.guid] = None  # a class deriving from itself stops here
+            found = read_script_facts(
+                self.root / info.path, info.class_name, self._named, self._is_script
+            )
+            if found is not None:
+                self.enums.update(found.enums)
+            self._read[info.guid] = found
+        return self._read[info.guid]
+
+    def _named(self, class_name: str) -> ProjectFacts | CatalogScript | None:
+        """A base class: the project's script of that name if there is exactly one, else ROS#'s."""
+        infos = self._by_name.get(class_name, [])
+        if len(infos) == 1:
+            return self._project(infos[0])
+        return rossharp_catalog().named(class_name)
+
+    def _is_script(self, class_name: str) -> bool:
+        return class_name in self._by_name or rossharp_catalog().named(class_name) is not None

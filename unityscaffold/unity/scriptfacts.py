@@ -1,0 +1,190 @@
+"""A project's own MonoBehaviour as the catalog describes ROS#'s: bases, ``[RequireComponent]``s
+and serialized fields with what Unity stores for each, read from the script's ``.cs``.
+
+With these a manifest's values for the project's scripts are checked like those for ROS#'s
+(a misspelled field gets "did you mean", ``@Path`` gives the GameObject, its transform or the
+component that fits the declared type). Unlike the catalog's extractor this reader never fails:
+a type it cannot place keeps the kind ``raw:<C# type>`` and its value is written as given; a
+file it cannot read, or without the class named like the file, gives no facts at all.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.unity.catalog import CatalogField, CatalogScript
+from unityscaffold.unity.csharp import (
+    NEVER_SERIALIZED,
+    PRIMITIVES,
+    UNITY_ASSETS,
+    UNITY_COMPONENTS,
+    UNITY_STRUCTS,
+    SourceError,
+    TypeDecl,
+    parse_file,
+    split_top,
+)
+
+__all__ = ["ProjectFacts", "read_script_facts"]
+
+# Unity's component classes beyond those ROS# names (the catalog's list), that a project's field
+# may hold.
+_MORE_COMPONENTS = frozenset(
+    {
+        "Component",
+        "Behaviour",
+        "BoxCollider",
+        "SphereCollider",
+        "CapsuleCollider",
+        "MeshCollider",
+        "Canvas",
+        "CanvasRenderer",
+        "CanvasGroup",
+        "AudioSource",
+        "Animator",
+        "SkinnedMeshRenderer",
+        "FixedJoint",
+        "SpringJoint",
+        "CharacterJoint",
+        "CharacterController",
+        "Button",
+        "Slider",
+        "Toggle",
+        "InputField",
+        "ScrollRect",
+        "Dropdown",
+    }
+)
+_REQUIRE = re.compile(r"(?:UnityEngine\.)?RequireComponent\s*\(")
+_TYPEOF = re.compile(r"typeof\s*\(\s*([\w.]+)\s*\)")
+_ROOTS = {"MonoBehaviour": ("MonoBehaviour",), "ScriptableObject": ("ScriptableObject",)}
+
+
+@dataclass(frozen=True, slots=True)
+class ProjectFacts:
+    script: CatalogScript
+    enums: dict[str, dict[str, int]]  # full C# name -> member -> value, for the fields' enums
+
+
+#: A class name -> the facts of another script (the project's or ROS#'s), for base classes.
+Lookup = Callable[[str], "ProjectFacts | CatalogScript | None"]
+
+
+def read_script_facts(
+    path: Path, class_name: str, lookup: Lookup, is_script: Callable[[str], bool]
+) -> ProjectFacts | None:
+    """The facts of ``class_name`` declared in ``path`` (None when they cannot be read).
+
+    ``lookup`` gives the facts of a base class; ``is_script`` tells whether a field's type is a
+    MonoBehaviour the project or ROS# has (a field of that type holds a reference).
+    """
+    try:
+        data = path.read_bytes()
+        decls = parse_file(data.decode("utf-8-sig", errors="replace"), path.name)
+    except (OSError, SourceError, ValueError, IndexError):
+        return None
+    decl = next((d for d in decls if d.name == class_name and d.kind == "class"), None)
+    if decl is None:
+        return None
+    enums = {d.name: d for d in decls if d.kind == "enum"}
+    used: dict[str, dict[str, int]] = {}
+    bases: tuple[str, ...] = ()
+    inherited: tuple[CatalogField, ...] = ()
+    requires = set(_requires(decl))
+    base = _base_class(decl)
+    if base is not None:
+        bare = base.split("<")[0].rsplit(".", 1)[-1]
+        found = _ROOTS.get(bare) or _base_facts(lookup, bare)
+        if isinstance(found, tuple):
+            bases = found
+        elif found is not None:
+            script = found.script if isinstance(found, ProjectFacts) else found
+            bases = (script.class_name, *script.bases)
+            inherited = script.fields
+            requires |= set(script.requires)
+            if isinstance(found, ProjectFacts):
+                used.update(found.enums)
+        else:
+            bases = (bare,)
+    own = []
+    for raw in decl.fields:
+        if raw.serialized:
+            kind = _kind(raw.type, enums, used, is_script)
+            if kind is not None:
+                own.append(CatalogField(raw.name.lstrip("@"), raw.type, kind))
+    script = CatalogScript(
+        class_name=class_name,
+        namespace=decl.namespace,
+        path=path.as_posix(),
+        bases=bases,
+        attachable=True,
+        requires=tuple(sorted(requires)),
+        fields=(*inherited, *own),
+        guids=(),
+    )
+    return ProjectFacts(script, used)
+
+
+def _base_facts(lookup: Lookup, name: str) -> ProjectFacts | CatalogScript | None:
+    try:
+        return lookup(name)
+    except RecursionError:  # classes deriving from each other: not valid C# anyway
+        return None
+
+
+def _base_class(decl: TypeDecl) -> str | None:
+    """The base class among the listed bases: the first that is not an interface (IName)."""
+    for base in decl.bases:
+        bare = base.split("<")[0].rsplit(".", 1)[-1]
+        if not re.fullmatch(r"I[A-Z]\w*", bare):
+            return base
+    return None
+
+
+def _requires(decl: TypeDecl) -> list[str]:
+    return [
+        t.rsplit(".", 1)[-1]
+        for attribute in decl.attributes
+        for part in split_top(attribute)
+        if _REQUIRE.match(part)
+        for t in _TYPEOF.findall(part)
+    ]
+
+
+def _kind(
+    written: str,
+    enums: Mapping[str, TypeDecl],
+    used: dict[str, dict[str, int]],
+    is_script: Callable[[str], bool],
+) -> str | None:
+    """What Unity stores for a field of C# type ``written`` (None: Unity does not store it)."""
+    text = written.removeprefix("UnityEngine.").removeprefix("System.")
+    inner = None
+    if text.endswith("[]"):
+        inner = text[:-2]
+    elif text.startswith(("List<", "Collections.Generic.List<")) and text.endswith(">"):
+        inner = text[text.index("<") + 1 : -1]
+    if inner is not None:
+        kind = _kind(inner, enums, used, is_script)
+        if kind is None or kind.endswith("[]") or kind.startswith("raw:"):
+            return None if kind is None else f"raw:{written}"
+        return f"{kind}[]"
+    if text in PRIMITIVES:
+        return PRIMITIVES[text]
+    if NEVER_SERIALIZED.match(text):
+        return None
+    if text in UNITY_STRUCTS:
+        return text
+    bare = text.rsplit(".", 1)[-1]
+    if bare in enums:
+        decl = enums[bare]
+        used[decl.full_name] = dict(decl.members)
+        return f"enum:{decl.full_name}"
+    if bare in UNITY_COMPONENTS or bare in UNITY_ASSETS or bare in _MORE_COMPONENTS:
+        return f"ref:{bare}"
+    if is_script(bare):
+        return f"ref:{bare}"
+    return f"raw:{written}"
