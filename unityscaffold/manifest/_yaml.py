@@ -1,6 +1,7 @@
 """YAML text to a small tree whose every node knows its ``SourceLocation``.
 
-We compose with ruamel.yaml (YAML 1.2, so ``yes`` stays text) and convert the node graph
+We compose with ruamel.yaml (YAML 1.2, so ``yes`` stays text; plain manifests are read by
+libyaml into the same nodes, see ``_libyaml``) and convert the node graph
 ourselves instead of constructing Python objects: construction forgets positions, and doing it
 here lets us report duplicate keys, custom tags and alias bombs as located errors.
 """
@@ -22,6 +23,7 @@ from ruamel.yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
 from ruamel.yaml.reader import ReaderError
 
 from unityscaffold.errors import LocatedError, SourceLocation
+from unityscaffold.manifest._libyaml import RUAMEL, compose_plain
 
 __all__ = ["YEntry", "YMap", "YNode", "YScalar", "YSeq", "compose"]
 
@@ -72,11 +74,13 @@ def compose(text: str, path: str) -> YNode | None:
     """Parse one YAML document; None when it holds no value at all (empty or comments only)."""
     lines = text.splitlines()
     yaml = YAML(typ="safe", pure=True)
+    node = compose_plain(text, yaml.resolver)
     try:
         with warnings.catch_warnings():
             # Reused anchors are legal YAML; ruamel only warns, and library code must not print.
             warnings.simplefilter("ignore")
-            node = yaml.compose(text)
+            if node is RUAMEL:
+                node = yaml.compose(text)
     except MarkedYAMLError as exc:
         raise _syntax_error(exc, path, lines) from None
     except ReaderError as exc:
