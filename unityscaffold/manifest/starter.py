@@ -33,7 +33,8 @@ connector:              # ROS#'s RosConnector, created if missing
 # optional rate (Hz, publish), throttle (ms) and queue (subscribe), gameobject, scene.
 topics:
 #  - {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, rate: 10}
-#  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, throttle: 100}
+#  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, throttle: 100,
+#    gameobject: Robot/base_link}
 
 # Each entry: name, type, role (client: Unity calls it; server: Unity provides it).
 services:
