@@ -176,3 +176,16 @@ def test_a_file_differing_only_in_crlf_line_endings_is_unchanged_and_kept(tmp_pa
     assert path.read_bytes() == b"class B\n{\n}\n"  # written with LF
     assert fileout.same_text(b"a\r\nb", b"a\nb")
     assert not fileout.same_text(b"a\rb", b"a\nb")
+
+
+def test_a_name_longer_than_file_systems_take_is_refused_before_anything_is_touched(
+    tmp_path: Path,
+) -> None:
+    fits = tmp_path / ("é" * 127 + "a")  # 255 bytes of UTF-8
+    too_long = tmp_path / "Messages" / ("é" * 128)  # 256 bytes
+    fileout.check_name_lengths([fits])
+    with pytest.raises(UserError, match="the name 'éééééééééééééééééééééééé…' is 256 bytes long"):
+        fileout.check_name_lengths([fits, too_long])
+    assert fileout.name_too_long("Assets/" + "a" * 250, len(".meta")) is None
+    assert fileout.name_too_long("Assets/" + "a" * 251, len(".meta")) == "a" * 251
+    assert list(tmp_path.iterdir()) == []

@@ -33,14 +33,45 @@ from pathlib import Path
 from unityscaffold.errors import UserError
 
 __all__ = [
+    "MAX_NAME_BYTES",
     "ChangeKind",
     "DesiredFile",
     "FileChange",
+    "check_name_lengths",
+    "name_too_long",
     "plan_files",
     "same_text",
     "write_files",
     "write_if_changed",
 ]
+
+
+MAX_NAME_BYTES = 255
+"""The longest file or folder name, in bytes of UTF-8, that common file systems take (ext4,
+APFS, NTFS count 255 of their units). A fixed figure, not the local one, so that a project that
+applies here also applies on a teammate's machine."""
+
+
+def name_too_long(relative: str, extra: int = 0) -> str | None:
+    """The first ``/``-separated part of ``relative`` whose name, with ``extra`` more bytes
+    (a ``.meta`` suffix), would not fit in ``MAX_NAME_BYTES``; None when all fit."""
+    return next(
+        (p for p in relative.split("/") if len(p.encode("utf-8")) + extra > MAX_NAME_BYTES), None
+    )
+
+
+def check_name_lengths(paths: Iterable[Path]) -> None:
+    """Refuse, before anything is read or written, a path with a name the disk cannot hold
+    (an ``OSError`` half-way through would leave a partial result)."""
+    for path in paths:
+        part = name_too_long(path.as_posix())
+        if part is not None:
+            raise UserError(
+                f"cannot write {path}: the name '{part[:24]}…' is "
+                f"{len(part.encode('utf-8'))} bytes long",
+                hint=f"file systems take names of at most {MAX_NAME_BYTES} bytes; "
+                "shorten the name in the manifest or the interface it comes from",
+            )
 
 
 class ChangeKind(enum.Enum):

@@ -20,7 +20,13 @@ from unityscaffold.apply._scriptmetas import plan_script_metas
 from unityscaffold.apply._settings import with_ros_define
 from unityscaffold.apply._userfiles import plan_user_files
 from unityscaffold.errors import LocatedError, UserError
-from unityscaffold.fileout import DesiredFile, FileChange, plan_files, same_text
+from unityscaffold.fileout import (
+    DesiredFile,
+    FileChange,
+    check_name_lengths,
+    plan_files,
+    same_text,
+)
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Manifest
@@ -144,6 +150,7 @@ def make_plan(
     scenes = plan_scenes(manifest, code, rossharp, scripts, lock, follow_renames=follow_renames)
 
     generated = list(code.generated)
+    check_name_lengths(d.path for d in (*generated, *code.created_once))
     conflicts = [] if force else _conflicts(manifest, generated, lock)
     user = plan_user_files(manifest, code, lock)
     user_paths = {d.path for d in user.desired}

@@ -6,6 +6,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from unityscaffold.fileout import MAX_NAME_BYTES
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._fields import read_fields
 from unityscaffold.manifest._paths import project_path
@@ -110,16 +111,40 @@ def _type_hint(m: YMap, wrong_kind: str, where: str) -> str | None:
     return None
 
 
+# The longest file a script class gets is its user half's .meta: Name.User.cs.meta.
+_MAX_SCRIPT_CLASS = MAX_NAME_BYTES - len(".User.cs.meta")
+
+
 def _class_name(r: Reader, m: YMap, name: str | None, kind: Direction | Role | None) -> str:
     entry = m.get("class")
     if entry is not None:
         value = r.text(m, "class", "a C# class name such as CmdVelPublisher", spec.CLASS_NAME)
         if value is not None and not is_csharp_identifier(value):
             r.invalid(entry, "a C# class name", hint=f"'{value}' is a C# keyword")
+        elif value is not None and len(value) > _MAX_SCRIPT_CLASS:
+            r.invalid(
+                entry,
+                f"a C# class name of at most {_MAX_SCRIPT_CLASS} characters",
+                hint=_LONG_CLASS_HINT,
+            )
         return value or ""
     if name is None or kind is None:
         return ""
-    return default_class_name(name, kind)
+    derived = default_class_name(name, kind)
+    if len(derived) > _MAX_SCRIPT_CLASS:
+        r.error(
+            m.get("name").value.location,  # type: ignore[union-attr]
+            f"the class derived from this name, '{derived[:24]}…', is {len(derived)} "
+            f"characters long (at most {_MAX_SCRIPT_CLASS})",
+            hint="give the entry a shorter 'class:'; " + _LONG_CLASS_HINT,
+        )
+    return derived
+
+
+_LONG_CLASS_HINT = (
+    f"the class names its files, and the longest, Name.User.cs.meta, must fit the "
+    f"{MAX_NAME_BYTES} bytes a file name holds"
+)
 
 
 def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:

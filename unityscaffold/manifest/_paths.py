@@ -12,6 +12,7 @@ import posixpath
 import re
 from pathlib import Path, PurePosixPath
 
+from unityscaffold.fileout import MAX_NAME_BYTES, name_too_long
 from unityscaffold.manifest._read import Reader
 from unityscaffold.manifest._yaml import YEntry
 
@@ -72,6 +73,16 @@ def project_path(
             expected,
             hint=f"it must be a folder inside {under}/, where "
             f"Unity compiles scripts, e.g. {under}/RosGenerated",
+        )
+        return None
+    long_part = name_too_long(norm, len(".meta"))
+    if long_part is not None:
+        reader.invalid(
+            entry,
+            expected,
+            hint=f"'{long_part[:24]}…' is {len(long_part.encode('utf-8'))} bytes long; a file "
+            f"or folder name holds at most {MAX_NAME_BYTES} bytes, and Unity adds '.meta' "
+            "beside it",
         )
         return None
     base = project_root / under if under else project_root
