@@ -17,12 +17,15 @@ from unityscaffold.apply._rossharp import DEFAULT_VERSION
 from unityscaffold.errors import UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.manifest import starter_manifest
-from unityscaffold.resources import template_environment, template_folder
+from unityscaffold.resources import schema_text, template_environment, template_folder
 from unityscaffold.unity.meta import folder_meta, guid_for
 
-__all__ = ["MAIN_SCENE", "init_project"]
+__all__ = ["MAIN_SCENE", "SCHEMA_FILE", "init_project"]
 
 MAIN_SCENE = "Assets/Scenes/Main.unity"
+#: The manifest's JSON Schema, copied beside robot.yaml for editors (the installed package's
+#: copy is out of reach inside site-packages); ``scaffold schema -o`` refreshes it.
+SCHEMA_FILE = "robot.schema.json"
 _TEMPLATE_ROOT = "unity_project"
 _RENAMES = {"gitignore": ".gitignore", "gitattributes": ".gitattributes"}
 
@@ -84,9 +87,12 @@ def init_project(directory: Path, ros: int, *, force: bool = False) -> list[File
         DesiredFile(directory / rel, data, create_only=True)
         for rel, data in _template_files(context) + _scene_files(context["product_guid"])
     ]
-    manifest = starter_manifest(ros, MAIN_SCENE, schema=None)
+    manifest = starter_manifest(ros, MAIN_SCENE, schema=SCHEMA_FILE)
     desired.append(
         DesiredFile(directory / "robot.yaml", manifest.encode("utf-8"), create_only=True)
+    )
+    desired.append(
+        DesiredFile(directory / SCHEMA_FILE, schema_text().encode("utf-8"), create_only=True)
     )
     changes = plan_files(desired)
     write_files(changes)

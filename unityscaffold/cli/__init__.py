@@ -21,6 +21,7 @@ _COMMANDS = {
     "msgs": "msgs",
     "scene": "scene",
     "discover": "discover",
+    "schema": "schema",
 }
 _GROUPS = ("msgs", "scene")
 
@@ -38,7 +39,7 @@ def build_app(argv: list[str]) -> typer.Typer:
         name="scaffold",
         help="Generate ROS# message classes, ROS components and scene wiring for Unity.",
         no_args_is_help=True,
-        add_completion=False,
+        add_completion=True,  # --install-completion / --show-completion for bash, zsh, fish, pwsh
         pretty_exceptions_enable=False,
     )
     app.callback()(_root)
@@ -81,7 +82,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         # Without standalone mode click returns a command's exit status instead of exiting.
         args = sys.argv[1:] if argv is None else argv
-        status = build_app(args)(args=args, standalone_mode=False)
+        # prog_name fixed: also `python -m unityscaffold` completes and shows usage as `scaffold`
+        status = build_app(args)(args=args, prog_name="scaffold", standalone_mode=False)
     except ScaffoldError as exc:
         typer.echo(exc.render(), err=True)
         return int(exc.exit_code)

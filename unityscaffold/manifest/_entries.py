@@ -48,6 +48,7 @@ class Context:
     scene_written: bool  # a wrong top-level scene is reported once, not for every entry
     create: bool
     connector_gameobject: str
+    ros: int | None = None  # the manifest's ROS version, when it is valid
 
 
 def locations(m: YMap) -> Locations:
@@ -96,8 +97,21 @@ def _name_hint(m: YMap) -> str | None:
     if value.startswith("~"):
         return "private names (~) do not exist for rosbridge clients; write the full name"
     if any(part[:1].isdigit() for part in value.split("/")):
-        return "each part of a name starts with a letter (or '_' after the first '/')"
+        return "each part of a name starts with a letter (or '_' after a '/')"
     return "ROS names use only letters, digits, '_' and '/'"
+
+
+def _ros_name(r: Reader, m: YMap, ctx: Context) -> str | None:
+    """A topic or service name; ROS 2 also forbids ``__`` (ROS 1 allows it)."""
+    name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
+    if name is not None and ctx.ros == 2 and "__" in name:
+        r.invalid(
+            m.get("name"),  # type: ignore[arg-type]
+            EXPECT_NAME,
+            hint="ROS 2 names may not contain '__' (a doubled underscore); use one '_'",
+        )
+        return None
+    return name
 
 
 def _type_hint(m: YMap, wrong_kind: str, where: str) -> str | None:
@@ -151,7 +165,7 @@ def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:
     m = r.mapping(node, spec.TOPIC)
     if m is None:
         return None
-    name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
+    name = _ros_name(r, m, ctx)
     type_ = r.text(
         m,
         "type",
@@ -215,7 +229,7 @@ def read_service(r: Reader, node: YNode, ctx: Context) -> Service | None:
     m = r.mapping(node, spec.SERVICE)
     if m is None:
         return None
-    name = r.text(m, "name", EXPECT_NAME, spec.ROS_NAME, hint=_name_hint(m))
+    name = _ros_name(r, m, ctx)
     type_ = r.text(
         m,
         "type",

@@ -135,12 +135,22 @@ class Reader:
         )
         return value if isinstance(value, bool) else None
 
+    def whole(self, m: YMap, key: str, expected: str) -> int | None:
+        """A whole number; ``10.0`` counts as ``10``, as JSON Schema's ``integer`` has it."""
+        value = self.scalar(m, key, (int, float), expected)
+        if isinstance(value, float):
+            if not value.is_integer():  # also false for inf and nan
+                self.invalid(m.get(key), expected)  # type: ignore[arg-type]
+                return None
+            return int(value)
+        return value if isinstance(value, int) else None
+
     def integer(self, m: YMap, key: str, minimum: int, unit: str = "") -> int | None:
         """A whole number from ``minimum`` up to what the C# ``int`` it is written to holds."""
         of = f" of {unit}" if unit else ""
         expected = f"a whole number{of} ≥ {minimum}"
-        value = self.scalar(m, key, (int,), expected)
-        if not isinstance(value, int):
+        value = self.whole(m, key, expected)
+        if value is None:
             return None
         if value < minimum:
             self.invalid(m.get(key), expected)  # type: ignore[arg-type]

@@ -15,6 +15,7 @@ from typing import Any
 
 from unityscaffold.manifest.model import (
     CSHARP_IDENTIFIER,
+    CSHARP_KEYWORDS,
     MANIFEST_VERSION,
     Direction,
     Protocol,
@@ -25,7 +26,9 @@ from unityscaffold.manifest.model import (
 __all__ = ["SECTIONS", "Key", "Section", "patterns"]
 
 _WORD = "[A-Za-z][A-Za-z0-9_]*"
-ROS_NAME = f"^/?{_WORD}(/[A-Za-z_][A-Za-z0-9_]*)*$"
+# ROS 1's rule (a part may start with '_' after a '/'); ROS 2 also forbids '__' (ROS2_NAME_NOT).
+ROS_NAME = "^(/[A-Za-z_]|[A-Za-z])[A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*$"
+ROS2_NAME_NOT = "__"
 MSG_TYPE = f"^{_WORD}/(msg/)?{_WORD}$"
 SRV_TYPE = f"^{_WORD}/(srv/)?{_WORD}$"
 CLASS_NAME = f"^{CSHARP_IDENTIFIER}$"
@@ -37,6 +40,12 @@ URL = "^wss?://[^\\s/]+(/\\S*)?$"
 INT32_MAX = 2**31 - 1
 #: The positive range of a C# ``float`` (rate): its smallest normal value and its largest.
 FLOAT32_TINY, FLOAT32_MAX = 1.1754943508222875e-38, 3.4028234663852886e38
+# What a path in the manifest must not contain: a '\' separator (the manifest is shared across
+# systems), and for paths inside the project a leading '/' or drive letter.
+NOT_PORTABLE = "\\\\"
+NOT_RELATIVE = "\\\\|^/|^[A-Za-z]:"
+# A C# keyword as one part of a dotted name; such a class or namespace would not compile.
+KEYWORD_PART = f"(^|[.])({'|'.join(sorted(CSHARP_KEYWORDS))})([.]|$)"
 
 NO_DEFAULT = object()
 DEFAULT_TIMEOUT = 10
@@ -84,6 +93,9 @@ def patterns() -> dict[str, str]:
         "gameobject": GAMEOBJECT,
         "scene": SCENE,
         "url": URL,
+        "not_portable": NOT_PORTABLE,
+        "not_relative": NOT_RELATIVE,
+        "keyword_part": KEYWORD_PART,
     }
 
 
@@ -98,7 +110,7 @@ def _list_of(item: Mapping[str, Any]) -> dict[str, Any]:
 
 _STR = {"type": "string", "minLength": 1}
 _BOOL = {"type": "boolean"}
-_SCENE = {"type": "string", "pattern": SCENE}
+_SCENE = {"type": "string", "pattern": SCENE, "not": {"pattern": NOT_RELATIVE}}
 _GAMEOBJECT = {"type": "string", "pattern": GAMEOBJECT}
 _CREATE = Key(
     "create",
@@ -110,7 +122,7 @@ _CLASS = Key(
     "class",
     "Name of the generated C# class, overriding the one derived from the "
     "name (e.g. `/cmd_vel` publish gives `CmdVelPublisher`).",
-    {"type": "string", "pattern": CLASS_NAME},
+    {"type": "string", "pattern": CLASS_NAME, "not": {"enum": sorted(CSHARP_KEYWORDS)}},
 )
 
 
@@ -152,19 +164,19 @@ TOP = Section(
         Key(
             "project",
             "Unity project root (the folder holding `Assets/`), relative to this file.",
-            _STR,
+            {**_STR, "not": {"pattern": NOT_RELATIVE}},
             default=".",
         ),
         Key(
             "output",
             "Folder for generated code, relative to the project; must be inside `Assets/`.",
-            {"type": "string", "pattern": "^(\\./)?Assets/."},
+            {"type": "string", "pattern": "^(\\./)?Assets/.", "not": {"pattern": NOT_PORTABLE}},
             default="Assets/RosGenerated",
         ),
         Key(
             "namespace",
             "C# root namespace for generated code, overriding the default.",
-            {"type": "string", "pattern": NAMESPACE},
+            {"type": "string", "pattern": NAMESPACE, "not": {"pattern": KEYWORD_PART}},
         ),
         Key(
             "include_shipped",
@@ -177,7 +189,7 @@ TOP = Section(
             "interfaces",
             "Extra folders searched for `.msg`/`.srv`/`.action` files (workspaces, "
             "a definitions cache), relative to this file.",
-            _list_of(_STR),
+            _list_of({**_STR, "not": {"pattern": NOT_PORTABLE}}),
         ),
         Key(
             "scene",
@@ -203,6 +215,17 @@ TOP = Section(
             "Existing MonoBehaviours (yours or ROS#'s) to add with field values.",
             _list_of(_ref("component")),
         ),
+    ),
+    rules=(
+        {
+            "if": {"properties": {"ros": {"const": 2}}, "required": ["ros"]},
+            "then": {
+                "properties": {
+                    key: {"items": {"properties": {"name": {"not": {"pattern": ROS2_NAME_NOT}}}}}
+                    for key in ("topics", "services")
+                }
+            },
+        },
     ),
 )
 
@@ -278,7 +301,14 @@ TOPIC = Section(
         Key(
             "rate",
             "Publish only: messages per second (Hz). Absent: publish on demand.",
-            {"type": "number", "minimum": FLOAT32_TINY, "maximum": FLOAT32_MAX},
+            # NaN passes every comparison, so "not above the largest float" is what refuses it
+            # in a JSON Schema validator (as "maximum" refuses .inf)
+            {
+                "type": "number",
+                "minimum": FLOAT32_TINY,
+                "maximum": FLOAT32_MAX,
+                "not": {"exclusiveMinimum": FLOAT32_MAX},
+            },
         ),
         Key(
             "throttle",
@@ -343,7 +373,13 @@ COMPONENT = Section(
             "script",
             "Class name of the MonoBehaviour (e.g. `TwistSubscriber`) or the path of "
             "its `.cs` file, relative to the project.",
-            _STR,
+            {
+                "type": "string",
+                "anyOf": [
+                    {"pattern": "[.]cs$", "not": {"pattern": NOT_RELATIVE}},
+                    {"pattern": NAMESPACE},
+                ],
+            },
             required=True,
         ),
         Key(
@@ -359,7 +395,11 @@ COMPONENT = Section(
             "Serialized field values by field name. A text starting with `@` refers to "
             "a GameObject (`@Robot/base_link`) or a component on one "
             "(`@RosConnector:RosConnector`) in the same scene; write `@@` for a literal `@`.",
-            {"type": ["object", "null"], "additionalProperties": _ref("fieldValue")},
+            {
+                "type": ["object", "null"],
+                "propertyNames": {"pattern": CLASS_NAME},
+                "additionalProperties": _ref("fieldValue"),
+            },
         ),
     ),
 )

@@ -101,7 +101,7 @@ def _position(d: Diagnostic) -> tuple[int, int]:
 
 def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     version = _version(r, top)
-    ros = r.scalar(top, "ros", (int,), "1 or 2")
+    ros = r.whole(top, "ros", "1 or 2")
     if ros is not None and ros not in (1, 2):
         r.invalid(top.get("ros"), "1 or 2")  # type: ignore[arg-type]
         ros = None
@@ -116,6 +116,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         top.get("scene") is not None,
         True if create is None else create,
         connector.gameobject,
+        ros,
     )
     topics = [read_topic(r, n, ctx) for n in r.items(top, "topics")]
     services = [read_service(r, n, ctx) for n in r.items(top, "services")]
@@ -148,7 +149,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
 
 def _version(r: Reader, top: YMap) -> int | None:
     entry = top.get("version")
-    value = r.scalar(top, "version", (int,), str(MANIFEST_VERSION))
+    value = r.whole(top, "version", str(MANIFEST_VERSION))
     if entry is not None and isinstance(value, int) and value != MANIFEST_VERSION:
         r.error(
             entry.value.location,

@@ -18,6 +18,7 @@ from unityscaffold.interfaces.model import Dialect
 
 __all__ = [
     "CSHARP_IDENTIFIER",
+    "CSHARP_KEYWORDS",
     "MANIFEST_VERSION",
     "Component",
     "ComponentField",
@@ -261,7 +262,7 @@ class Manifest:
 
 # The reserved C# keywords (codegen.naming keeps the same list plus the contextual ones, which
 # are legal class names); a class named after one would not compile.
-_CSHARP_KEYWORDS = frozenset(
+CSHARP_KEYWORDS = frozenset(
     (
         "abstract as base bool break byte case catch char checked class const continue decimal "
         "default delegate do double else enum event explicit extern false finally fixed float for "
@@ -283,7 +284,7 @@ _SUFFIX: dict[Direction | Role, str] = {
 
 def is_csharp_identifier(name: str) -> bool:
     """True for a plain (ASCII, non-keyword) C# identifier usable as a class name."""
-    return bool(_IDENTIFIER_RE.fullmatch(name)) and name not in _CSHARP_KEYWORDS
+    return bool(_IDENTIFIER_RE.fullmatch(name)) and name not in CSHARP_KEYWORDS
 
 
 def default_class_name(name: str, kind: Direction | Role) -> str:

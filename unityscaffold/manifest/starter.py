@@ -63,5 +63,11 @@ def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
             f"invalid scene path '${scene}'",
             hint="give a project-relative .unity file, e.g. Assets/Scenes/Main.unity",
         )
-    modeline = f"# yaml-language-server: $schema={schema}\n" if schema else ""
+    modeline = (
+        f"# yaml-language-server: $schema={schema}\n"
+        f"# ({schema} lets editors check this file; after upgrading unityscaffold refresh it\n"
+        f"# with `scaffold schema -o {schema}`.)\n"
+        if schema
+        else ""
+    )
     return _TEMPLATE.substitute(version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline)

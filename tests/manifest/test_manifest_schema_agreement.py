@@ -1,0 +1,203 @@
+"""The JSON Schema an editor checks robot.yaml with and ``scaffold`` agree on hand-made variants.
+
+Each variant is a valid manifest with one value changed, written out as YAML text and read by
+both: the jsonschema library with the shipped schema, and ``load_manifest``. Both accept it or
+both refuse it, under ROS 1 and ROS 2. The only exceptions are the rules listed in
+``TOOL_ONLY``, which need the file system or path arithmetic that JSON Schema does not have.
+"""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+from helpers import require
+from ruamel.yaml import YAML
+
+from unityscaffold.errors import LocatedError
+from unityscaffold.manifest import load_manifest
+from unityscaffold.manifest.schema import load_schema
+
+BASE: dict[str, Any] = {
+    "version": 1,
+    "ros": 1,
+    "project": ".",
+    "output": "Assets/RosGenerated",
+    "namespace": "MyRobot.Ros",
+    "interfaces": ["defs"],
+    "scene": "Assets/Scenes/Main.unity",
+    "connector": {"gameobject": "RosConnector", "url": "ws://localhost:9090", "timeout": 5},
+    "topics": [
+        {"name": "/cmd_vel", "type": "geometry_msgs/Twist", "direction": "publish", "rate": 10},
+        {
+            "name": "/odom",
+            "type": "nav_msgs/msg/Odometry",
+            "direction": "subscribe",
+            "throttle": 10,
+            "queue": 1,
+        },
+    ],
+    "services": [{"name": "/reset", "type": "std_srvs/Trigger", "role": "client"}],
+    "components": [{"script": "TwistSubscriber", "gameobject": "Robot", "fields": {"Topic": "/x"}}],
+}
+INF, NAN = float("inf"), float("nan")
+# (where, value): where is a dotted path into BASE, list positions as numbers.
+VARIANTS: list[tuple[str, Any]] = [
+    # whole numbers written as decimals are whole numbers to both
+    ("version", 1.0),
+    ("version", 10.0),
+    ("version", 2),
+    ("version", 1.5),
+    ("version", "1"),
+    ("ros", 2.0),
+    ("ros", 3),
+    ("ros", "2"),
+    ("ros", True),
+    ("connector.timeout", 10.0),
+    ("connector.timeout", 1.5),
+    ("connector.timeout", 0),
+    ("topics.1.throttle", 100.0),
+    ("topics.1.throttle", -1),
+    ("topics.1.queue", 1.0),
+    ("topics.1.queue", 0),
+    # rates: positive and finite
+    ("topics.0.rate", 0.5),
+    ("topics.0.rate", 1e308),
+    ("topics.0.rate", INF),
+    ("topics.0.rate", -INF),
+    ("topics.0.rate", NAN),
+    ("topics.0.rate", 0),
+    ("topics.0.rate", "10"),
+    # paths: '/' separators, relative where they must be
+    ("scene", "Assets\\Scenes\\Main.unity"),
+    ("scene", "/abs/Main.unity"),
+    ("scene", "C:/Main.unity"),
+    ("scene", "Assets/Scenes/Main.prefab"),
+    ("output", "Assets\\Gen"),
+    ("output", "Assets/Gen\\Ros"),
+    ("output", "./Assets/Gen"),
+    ("output", "Gen"),
+    ("project", "..\\unity"),
+    ("project", "/abs"),
+    ("project", "C:/unity"),
+    ("project", "../unity"),
+    ("project", ""),
+    ("interfaces", ["a\\b"]),
+    ("interfaces", ["/opt/ros/noetic/share"]),
+    ("interfaces", [""]),
+    ("connector.scene", "Assets\\M.unity"),
+    ("topics.0.scene", "Assets\\M.unity"),
+    ("services.0.scene", "/M.unity"),
+    ("components.0.scene", "C:\\M.unity"),
+    ("components.0.script", "Assets\\Scripts\\Foo.cs"),
+    ("components.0.script", "/abs/Foo.cs"),
+    ("components.0.script", "Assets/Scripts/Foo.cs"),
+    ("components.0.script", "RosSharp.RosBridgeClient.TwistSubscriber"),
+    ("components.0.script", "Foo Bar"),
+    ("components.0.script", ""),
+    # C# names
+    ("topics.0.class", "int"),
+    ("topics.0.class", "class"),
+    ("services.0.class", "event"),
+    ("topics.0.class", "var"),
+    ("topics.0.class", "_Joints"),
+    ("topics.0.class", "2D"),
+    ("namespace", "My.class"),
+    ("namespace", "int"),
+    ("namespace", "Internal.Ros"),
+    ("namespace", "My..Ros"),
+    ("components.0.fields", {"class": 1}),
+    ("components.0.fields", {"1a": 1}),
+    ("components.0.fields", {"Offset": {"x": INF}}),
+    # topic and service names: ROS 1 allows '_' to start a part and '__'; ROS 2 refuses '__'
+    ("topics.0.name", "/_x"),
+    ("topics.0.name", "/cmd__vel"),
+    ("topics.0.name", "cmd_vel"),
+    ("topics.0.name", "_x"),
+    ("topics.0.name", "/a/_b"),
+    ("topics.0.name", "/1x"),
+    ("topics.0.name", "/x_"),
+    ("topics.0.name", "~x"),
+    ("topics.0.name", "/cmd//vel"),
+    ("topics.0.name", "/scan/"),
+    ("services.0.name", "/_reset"),
+    ("services.0.name", "/re__set"),
+    ("services.0.name", "/robot/reset"),
+    # types, URLs, GameObjects
+    ("topics.0.type", "geometry_msgs/srv/Twist"),
+    ("services.0.type", "std_srvs/srv/Trigger"),
+    ("connector.url", "wss://robot:9090/bridge"),
+    ("connector.url", "http://robot:9090"),
+    ("topics.0.gameobject", "Robot/base_link"),
+    ("topics.0.gameobject", "A//B"),
+    ("topics.0.gameobject", "Robot\\arm"),
+    ("topics.0.gameobject", "/Robot"),
+]
+# Refused by scaffold, accepted by the schema: "inside the project" is path arithmetic
+# (normalising '..', following symbolic links) that JSON Schema cannot do.
+TOOL_ONLY = {("scene", "../Main.unity"), ("output", "Assets/../Gen")}
+
+
+def _variant(ros: int, where: str, value: Any) -> dict[str, Any]:
+    data = copy.deepcopy(BASE)
+    data["ros"] = ros
+    *parents, last = where.split(".")
+    node: Any = data
+    for part in parents:
+        node = node[int(part)] if part.isdigit() else node[part]
+    node[int(last) if last.isdigit() else last] = value
+    return data
+
+
+def _verdicts(tmp_path: Path, data: dict[str, Any]) -> tuple[bool, bool, str]:
+    """(schema accepts, scaffold accepts, the YAML text) for one manifest."""
+    try:
+        import jsonschema
+    except ImportError:
+        jsonschema = None
+    require(jsonschema, "jsonschema (a test dependency)")
+    text = yaml.safe_dump(data, sort_keys=False)
+    path = tmp_path / "robot.yaml"
+    path.write_text(text, encoding="utf-8")
+    # What an editor's YAML language server sees: the YAML 1.2 data of the same text.
+    document = YAML(typ="safe", pure=True).load(text)
+    schema_ok = jsonschema.Draft202012Validator(load_schema()).is_valid(document)
+    try:
+        load_manifest(path)
+        tool_ok = True
+    except LocatedError:
+        tool_ok = False
+    return schema_ok, tool_ok, text
+
+
+@pytest.mark.parametrize("ros", [1, 2])
+@pytest.mark.parametrize(("where", "value"), VARIANTS, ids=[f"{w}={v!r}" for w, v in VARIANTS])
+def test_schema_and_scaffold_agree(tmp_path: Path, ros: int, where: str, value: Any) -> None:
+    schema_ok, tool_ok, text = _verdicts(tmp_path, _variant(ros, where, value))
+    assert schema_ok == tool_ok, f"schema {schema_ok}, scaffold {tool_ok}:\n{text}"
+
+
+@pytest.mark.parametrize("ros", [1, 2])
+def test_the_base_manifest_is_valid_to_both(tmp_path: Path, ros: int) -> None:
+    assert _verdicts(tmp_path, _variant(ros, "ros", ros))[:2] == (True, True)
+
+
+@pytest.mark.parametrize(("where", "value"), sorted(TOOL_ONLY))
+def test_rules_only_scaffold_checks_are_the_listed_ones(
+    tmp_path: Path, where: str, value: Any
+) -> None:
+    schema_ok, tool_ok, _ = _verdicts(tmp_path, _variant(1, where, value))
+    assert (schema_ok, tool_ok) == (True, False)
+
+
+@pytest.mark.parametrize(
+    ("ros", "name", "valid"),
+    [(1, "/_x", True), (1, "/cmd__vel", True), (2, "/_x", True), (2, "/cmd__vel", False)],
+)
+def test_topic_names_follow_their_ros_version(
+    tmp_path: Path, ros: int, name: str, valid: bool
+) -> None:
+    assert _verdicts(tmp_path, _variant(ros, "topics.0.name", name))[:2] == (valid, valid)
