@@ -71,3 +71,18 @@ def test_a_ros2_project_gets_the_define_in_every_build_target_group(tmp_path):
         assert re.search(rf"^    {group}: ROS2$", text, re.M), group
     again = run_cli("apply", "--check", str(project / "robot.yaml"))
     assert again.code == 0, again.out
+
+
+def test_init_force_refuses_to_write_through_a_linked_assets_folder(tmp_path):
+    # apply refuses writes that resolve outside the project; init --force follows the same rule
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    project = tmp_path / "proj"
+    project.mkdir()
+    (project / "Assets").symlink_to(outside, target_is_directory=True)
+    run = run_cli("init", str(project), "--force")
+    assert run.code == 2, run.out + run.err
+    assert "it resolves to" in run.err and f"outside the Unity project {project}" in run.err
+    assert "Traceback" not in run.err
+    assert list(outside.iterdir()) == []
+    assert sorted(p.name for p in project.iterdir()) == ["Assets"]

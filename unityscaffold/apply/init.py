@@ -13,6 +13,7 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
+from unityscaffold.apply._inside import check_inside
 from unityscaffold.apply._rossharp import DEFAULT_VERSION
 from unityscaffold.errors import UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
@@ -94,6 +95,8 @@ def init_project(directory: Path, ros: int, *, force: bool = False) -> list[File
     desired.append(
         DesiredFile(directory / SCHEMA_FILE, schema_text().encode("utf-8"), create_only=True)
     )
+    # --force may add to a folder whose Assets/ (or another part) is a link: apply's rule holds
+    check_inside(directory, (d.path for d in desired))
     changes = plan_files(desired)
     write_files(changes)
     return changes

@@ -6,12 +6,12 @@ changes and scene edits; nothing is written here (see ``apply.run``).
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan, plan_code
 from unityscaffold.apply._identity import follow_in_manifest
+from unityscaffold.apply._inside import check_inside
 from unityscaffold.apply._lock import LockFile, LockGameObject, lock_path, recorded, sha256
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._rossharp import RosSharp
@@ -98,29 +98,6 @@ def _conflicts(manifest: Manifest, generated: list[DesiredFile], lock: LockFile)
     return found
 
 
-def _check_inside(project: Path, paths: list[Path]) -> None:
-    """Refuse any write or deletion whose folder resolves outside the project.
-
-    The manifest's paths are checked when it loads, but a symbolic link created later inside
-    the output folder (or a stale lock) could still lead elsewhere.
-    """
-    root = project.resolve()
-    inside = str(root).rstrip(os.sep) + os.sep
-    resolved: dict[Path, str] = {}
-    for path in paths:
-        folder = resolved.get(path.parent)
-        if folder is None:
-            folder = resolved[path.parent] = str(path.parent.resolve())
-        if not (folder + os.sep).startswith(inside):
-            real = Path(folder) / path.name
-            raise UserError(
-                f"refusing to touch {path}: it resolves to {real}, outside the "
-                f"Unity project {root}",
-                hint="a folder on the way is a symbolic link; replace it with a real "
-                "folder inside the project",
-            )
-
-
 def _followed_manifest(manifest: Manifest, scenes: list[ScenePlan]) -> list[DesiredFile]:
     """The manifest with the paths of GameObjects renamed in Unity rewritten (--follow-renames)."""
     moved = [m for s in scenes for m in s.followed]
@@ -174,7 +151,7 @@ def make_plan(
             for path, file_id in sorted(s.gameobjects.items())
         ),
     )
-    _check_inside(project, [d.path for d in desired] + deletions)
+    check_inside(project, [d.path for d in desired] + deletions)
     desired += _followed_manifest(manifest, scenes)
     desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
     changes = plan_files(desired)
