@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import os
 import subprocess
+import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -178,7 +179,8 @@ def round_trip(
 def _run_pair(
     bridge: Bridge, mono: str, echo: EchoProgram, work: Path, node: str, seed: int, timeout: float
 ) -> RoundTrip:
-    """Run the rospy side (``data/node``) and the C# side on ``work``'s plan files together."""
+    """Run the rospy side (``data/node``) and, once it says "ready" (its topics or services are
+    known to the master), the C# side, on ``work``'s plan files."""
     result = work / "result.json"
     rospy_side = subprocess.Popen(
         [
@@ -194,6 +196,20 @@ def _run_pair(
         stderr=subprocess.STDOUT,
         text=True,
     )
+    lines: list[str] = []
+    ready = threading.Event()
+
+    def read() -> None:
+        assert rospy_side.stdout
+        for line in rospy_side.stdout:
+            lines.append(line)
+            if line.strip() == "ready":
+                ready.set()
+        ready.set()  # ended without "ready": its output says why
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    ready.wait(timeout)
     client = subprocess.Popen(
         [mono, str(echo.folder), bridge.url, str(work / "plan.txt")],
         stdin=subprocess.PIPE,
@@ -203,19 +219,20 @@ def _run_pair(
         env={**os.environ, "MONO_ENV_OPTIONS": ""},
     )
     try:
-        node_output, _ = rospy_side.communicate(timeout=timeout + 60)
+        rospy_side.wait(timeout=timeout + 60)
     except subprocess.TimeoutExpired:  # reported by the caller's assertion, with both outputs
         rospy_side.kill()
-        node_output, _ = rospy_side.communicate()
-        node_output += f"\n(rospy side killed after {timeout + 60:.0f} s)\n"
+        rospy_side.wait()
+        lines.append(f"\n(rospy side killed after {timeout + 60:.0f} s)\n")
     finally:
+        reader.join(10)
         try:
             echo_output, _ = client.communicate(input="", timeout=30)
         except subprocess.TimeoutExpired:  # ROS#'s Close can hang on a socket rosbridge broke
             client.kill()
             echo_output, _ = client.communicate()
     results = json.loads(result.read_text()) if result.exists() else {}
-    return RoundTrip(results, echo_output, node_output)
+    return RoundTrip(results, echo_output, "".join(lines))
 
 
 def service_round_trip(

@@ -31,7 +31,8 @@ def test_every_service_type_both_ways(
         for half, problem in halves.items()
         if problem
     }
-    assert not failures, "\n".join(f"{k}: {v}" for k, v in sorted(failures.items()))
+    report = "\n".join(f"{k}: {v}" for k, v in sorted(failures.items()))
+    assert not failures, f"{report}\n{done.node_output}\n{done.echo_output}"
     assert {"std_srvs/Trigger", "std_srvs/SetBool", "nav_msgs/GetMap"} <= set(names)
     assert "diffbot_msgs/SetSpeedLimit" in names
     assert len(names) == 30

@@ -1,6 +1,6 @@
 // Test program: both halves of every planned service through ROS#'s real client, both ways.
 // Usage: mono ServiceEcho.exe WS_URL PLAN_FILE; each line "PY_SERVICE CS_SERVICE ReqClass RespClass".
-// Per line: call PY_SERVICE (a rospy server) and keep the response it returns (deserialized
+// Line after line: call PY_SERVICE (a rospy server) and keep the response it returns (deserialized
 // by ROS#); then advertise CS_SERVICE, which answers every call with that kept response
 // (serialized by ROS#) and passes the request it received on to PY_SERVICE unchanged.
 // Prints "ready" once every CS_SERVICE is advertised; exits when stdin closes.
@@ -30,16 +30,29 @@ public static class ServiceEcho
             return 1;
         }
         string[] lines = File.ReadAllLines(args[1]).Where(l => l.Length > 0).ToArray();
-        var advertised = new CountdownEvent(lines.Length);
-        foreach (string line in lines)
+        var advertised = new ManualResetEvent(false);
+        string current = null;
+        // One service after the other, each next call made from the previous one's response
+        // handler: RosSocket's dictionaries are not thread-safe, so every use of the socket after
+        // the first call happens on the thread that delivers its messages.
+        Action next = () => advertised.Set();
+        foreach (string line in lines.Reverse())
         {
             string[] parts = line.Split(' ');
             Type relay = typeof(ServiceRelay<,>).MakeGenericType(Echo.FindType(parts[2]), Echo.FindType(parts[3]));
-            relay.GetMethod("Start").Invoke(null, new object[] { socket, parts[0], parts[1], advertised });
+            Action then = next;
+            next = () =>
+            {
+                Volatile.Write(ref current, parts[0]);
+                relay.GetMethod("Start").Invoke(null, new object[] { socket, parts[0], parts[1], then });
+            };
         }
-        if (!advertised.Wait(60000))
+        next();
+        if (!advertised.WaitOne(60000))
         {
-            Console.Error.WriteLine("not every rospy service answered");
+            // ROS# 2.2.1 throws on rosbridge's failure reply (a text where it expects the
+            // response's JSON) and never calls the handler.
+            Console.Error.WriteLine("no response from " + Volatile.Read(ref current));
             return 1;
         }
         Console.WriteLine("ready");
@@ -51,18 +64,17 @@ public static class ServiceEcho
 
 public static class ServiceRelay<TRequest, TResponse> where TRequest : Message, new() where TResponse : Message
 {
-    public static void Start(RosSocket socket, string python, string ours, CountdownEvent advertised)
+    public static void Start(RosSocket socket, string python, string ours, Action then)
     {
         socket.CallService<TRequest, TResponse>(python, kept =>
         {
             socket.AdvertiseService<TRequest, TResponse>(ours, (TRequest request, out TResponse response) =>
             {
                 response = kept;
-                // Not from the socket thread: ROS# delivers the answer on it.
-                ThreadPool.QueueUserWorkItem(_ => socket.CallService<TRequest, TResponse>(python, ignored => { }, request));
+                socket.CallService<TRequest, TResponse>(python, ignored => { }, request);
                 return true;
             });
-            advertised.Signal();
+            then();
         }, new TRequest());
     }
 }

@@ -38,6 +38,7 @@ INTEGERS = {
 }
 # ASCII without quotes (double and single), backslash and control characters: a known
 # defect between ROS# and rosbridge, reproduced separately in test_wire_defects.py.
+STARTUP = 60.0  # seconds the C# side may take to subscribe
 SAFE_TEXT = string.ascii_letters + string.digits + " -_.,;:!?()[]{}<>/=+*&%$#@~^|"
 
 
@@ -157,13 +158,20 @@ def main(plan_path, result_path, seed, timeout):
         rospy.Subscriber(entry["out"], cls, receiver(entry, sent))
         pending.append((entry, publisher, sent))
     print("ready", flush=True)
+    # TIMEOUT and "delay" count from the echo's first subscription (rosbridge's, to any input),
+    # not from here: the C# side starts after "ready", later still on a loaded machine.
     start = time.monotonic()
-    deadline = start + float(timeout)
+    deadline = start + STARTUP
+    subscribed = False
     while time.monotonic() < deadline:
         with lock:
             pending = [p for p in pending if key(p[0]) not in results]
         if not pending:
             break
+        if not subscribed and any(p.get_num_connections() for _, p, _ in pending):
+            subscribed = True
+            start = time.monotonic()
+            deadline = start + float(timeout)
         for entry, publisher, sent in pending:
             late = time.monotonic() - start < entry.get("delay", 0)
             if publisher.get_num_connections() and not late:
