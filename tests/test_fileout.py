@@ -15,6 +15,7 @@ from unityscaffold.fileout import (
     DesiredFile,
     FileChange,
     plan_files,
+    write_chunks_if_changed,
     write_files,
     write_if_changed,
 )
@@ -67,11 +68,11 @@ def test_a_failure_while_writing_leaves_nothing_behind(
     real = fileout._write_temp
     calls = []
 
-    def flaky(change: FileChange, durable: bool) -> Path:
+    def flaky(change: FileChange, durable: bool, chunks: fileout.Chunks | None = None) -> Path:
         calls.append(change.path)
         if len(calls) == 3:
             raise OSError(28, "No space left on device", str(change.path))
-        return real(change, durable)
+        return real(change, durable, chunks)
 
     monkeypatch.setattr(fileout, "_write_temp", flaky)
     changes = plan_files(
@@ -163,6 +164,30 @@ def test_write_if_changed_refuses_a_folder_in_the_way(tmp_path: Path) -> None:
     (tmp_path / "Scene.unity").mkdir()
     with pytest.raises(UserError, match="a folder of that name exists"):
         write_if_changed(tmp_path / "Scene.unity", "x")
+
+
+def test_write_chunks_if_changed_compares_piece_by_piece_and_writes_only_a_difference(
+    tmp_path: Path,
+) -> None:
+    target = tmp_path / "Big.unity"
+    pieces = [b"%YAML 1.1\n", b"--- !u!1 &1\n" * 3, b"GameObject:\n"]
+    assert write_chunks_if_changed(target, lambda: iter(pieces)) is True
+    assert target.read_bytes() == b"".join(pieces)
+    target.chmod(0o640)
+    before = target.stat().st_mtime_ns
+    assert write_chunks_if_changed(target, lambda: iter(pieces)) is False
+    assert target.stat().st_mtime_ns == before
+    for changed in ([*pieces, b"x"], pieces[:-1], [pieces[0], b"-" * len(pieces[1]), pieces[2]]):
+        assert write_chunks_if_changed(target, lambda c=changed: iter(c)) is True
+        assert target.read_bytes() == b"".join(changed)
+    assert target.stat().st_mode & 0o7777 == 0o640
+    assert [p.name for p in tmp_path.iterdir()] == ["Big.unity"]
+
+
+def test_write_chunks_if_changed_refuses_a_folder_in_the_way(tmp_path: Path) -> None:
+    (tmp_path / "Scene.unity").mkdir()
+    with pytest.raises(UserError, match="a folder of that name exists"):
+        write_chunks_if_changed(tmp_path / "Scene.unity", lambda: iter([b"x"]))
 
 
 def test_a_file_differing_only_in_crlf_line_endings_is_unchanged_and_kept(tmp_path: Path) -> None:

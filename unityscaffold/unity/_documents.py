@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import bisect
 import itertools
-from collections.abc import Sequence, Set
+from collections.abc import Iterator, Sequence, Set
 
 from unityscaffold.errors import SourceLocation, UserError
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, SETTINGS_CLASSES
@@ -19,6 +19,8 @@ from unityscaffold.unity._split import Doc
 from unityscaffold.unity.index import Hierarchy, build_hierarchy
 
 __all__ = ["Documents"]
+
+_CHUNK = 1 << 20
 
 
 class Documents:
@@ -76,8 +78,27 @@ class Documents:
         return doc
 
     def text(self) -> str:
-        joined = self.prolog + "".join(doc.text for doc in self._docs)
+        return self.render([doc.text for doc in self._docs])
+
+    def render(self, texts: Sequence[str]) -> str:
+        """The file made of the prolog and ``texts`` (documents' texts), line endings as loaded."""
+        joined = self.prolog + "".join(texts)
         return joined.replace("\n", "\r\n") if self._crlf else joined
+
+    def chunks(self) -> Iterator[bytes]:
+        """``text()`` as UTF-8 in pieces of about a megabyte: no whole-file copy on the way."""
+        batch, size = [self.prolog], len(self.prolog)
+        for doc in self._docs:
+            batch.append(doc.text)
+            size += len(doc.text)
+            if size >= _CHUNK:
+                yield self._encode(batch)
+                batch, size = [], 0
+        yield self._encode(batch)
+
+    def _encode(self, texts: list[str]) -> bytes:
+        joined = "".join(texts)
+        return (joined.replace("\n", "\r\n") if self._crlf else joined).encode("utf-8")
 
     def location(self, doc: Doc) -> SourceLocation:
         """Where ``doc``'s header is in the current text (line 0 if it is no longer there)."""

@@ -19,6 +19,7 @@ HEADER_RE = re.compile(r"^--- !u!(\d+) &(-?\d+)( stripped)?$", re.M)
 _ANY_HEADER_RE = re.compile(r"^---", re.M)
 _SEPARATOR = "\n--- !u!"
 _HEAD_RE = re.compile(r"(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:\n")
+_DOC_RE = re.compile(r"\n--- !u!(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:\n")
 _REF_ITEMS_RE = re.compile(r"(?:  - \{fileID: -?\d+\}\n)+")
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
@@ -79,6 +80,11 @@ def split_text(text: str, path: str) -> SplitFile:
             "not a Unity YAML file: it does not start with '%YAML'",
             hint="Unity writes text scenes only with Asset Serialization Mode 'Force Text'",
         )
+    fast = _split_whole(text)
+    if fast is not None:
+        _check_complete(text, path, fast.docs)
+        return SplitFile(fast.prolog, fast.docs, crlf)
+    # Something is wrong: split piece by piece to say what and where.
     pieces = text.split(_SEPARATOR)
     if len(pieces) - 1 != text.count("\n---"):
         raise _malformed(text, path)
@@ -104,6 +110,28 @@ def split_text(text: str, path: str) -> SplitFile:
         docs.append(Doc(int(match.group(1)), int(match.group(2)), match.group(3) is not None, body))
     _check_complete(text, path, docs)
     return SplitFile(prolog, docs, crlf)
+
+
+def _split_whole(text: str) -> SplitFile | None:
+    """The documents of a well-formed file, each sliced once from ``text`` where one regex
+    scan of the whole buffer finds its header; None when any header or prolog line is amiss."""
+    docs = []
+    start = -1
+    class_id = file_id = 0
+    stripped = False
+    for match in _DOC_RE.finditer(text):
+        if start >= 0:
+            docs.append(Doc(class_id, file_id, stripped, text[start : match.start() + 1]))
+        start = match.start() + 1
+        class_id, file_id = int(match.group(1)), int(match.group(2))
+        stripped = match.group(3) is not None
+    if start < 0 or len(docs) + 1 != text.count("\n---"):
+        return None
+    docs.append(Doc(class_id, file_id, stripped, text[start:]))
+    prolog = text[: text.index(_SEPARATOR) + 1]
+    if any(line and not line.startswith("%") for line in prolog.split("\n")):
+        return None
+    return SplitFile(prolog, docs, False)
 
 
 def _malformed(text: str, path: str) -> LocatedError:

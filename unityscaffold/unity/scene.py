@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import cast
 
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
-from unityscaffold.fileout import write_if_changed
+from unityscaffold.fileout import write_chunks_if_changed
 from unityscaffold.unity import _edits
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
@@ -49,9 +49,11 @@ class SceneDocument:
     input until something is edited); :meth:`write` validates and writes atomically if changed.
     """
 
-    def __init__(self, path: str, prolog: str, docs: list[Doc], crlf: bool, original: str):
-        self.original_text = original
+    def __init__(self, path: str, prolog: str, docs: list[Doc], crlf: bool):
         self._docs = Documents(path, prolog, docs, crlf)
+        # The loaded text as references to the documents' texts (edits replace a document's
+        # text, they never change a string): the original costs no copy of the file.
+        self._original = [doc.text for doc in docs]
 
     @property
     def path(self) -> str:
@@ -73,7 +75,7 @@ class SceneDocument:
     def parse(cls, text: str, path: str = "<scene>") -> SceneDocument:
         """Split ``text``; raise ``LocatedError`` if it is not complete Unity YAML."""
         split = split_text(text, path)
-        return cls(path, split.prolog, split.docs, split.crlf, text)
+        return cls(path, split.prolog, split.docs, split.crlf)
 
     @classmethod
     def load(cls, path: str | Path) -> SceneDocument:
@@ -91,6 +93,7 @@ class SceneDocument:
             text = data.decode("utf-8")
         except UnicodeDecodeError as exc:
             raise UserError(f"{name} is not UTF-8 text (byte {exc.start})") from None
+        del data  # the text is kept: the bytes would be one more copy at the peak
         return cls.parse(text, name)
 
     def text(self) -> str:
@@ -103,8 +106,16 @@ class SceneDocument:
         return self._docs.revision
 
     @property
+    def original_text(self) -> str:
+        """The text as loaded."""
+        return self._docs.render(self._original)
+
+    @property
     def changed(self) -> bool:
-        return bool(self._docs.changed) and self.text() != self.original_text
+        if not self._docs.changed:
+            return False
+        texts = [doc.text for doc in self._docs.in_order]
+        return texts != self._original
 
     def diff(self) -> str:
         """Unified diff from the loaded text to the current one (empty when unchanged)."""
@@ -120,7 +131,7 @@ class SceneDocument:
         problems = self.validate()
         if problems:
             raise LocatedError(problems)
-        return write_if_changed(path if path is not None else self.path, self.text())
+        return write_chunks_if_changed(path if path is not None else self.path, self._docs.chunks)
 
     # ----- queries ------------------------------------------------------------------------------
 
