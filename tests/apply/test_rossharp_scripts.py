@@ -28,6 +28,8 @@ _STRUCTS = {
     "Color": "{r: 1, g: 0.5, b: 0, a: 1}",
 }
 _SCALARS = {"int": "7", "float": "0.25", "bool": "true", "string": "/robot/topic"}
+# Built-in components the init scene has, on the GameObjects that hold them.
+_BUILT_IN = {"ref:Camera": "Main Camera", "ref:Light": "Directional Light"}
 
 
 @pytest.fixture
@@ -56,10 +58,12 @@ def _value(field: CatalogField, extra: list[str]) -> str | None:
         value = list(CATALOG.enums[kind[5:]])[-1]
     elif kind in ("ref:Transform", "ref:GameObject"):
         value = '"@Target"'
+    elif kind in _BUILT_IN:
+        value = f'"@{_BUILT_IN[kind]}"'
     elif kind.startswith("ref:"):
         target = _concrete(kind[4:].rsplit(".", 1)[-1])
         if target is None:
-            return None  # a built-in component (Camera, MeshRenderer...): not declared here
+            return None  # a built-in component the init scene lacks (MeshRenderer, Rigidbody)
         extra.append(
             f"  - {{script: {target.class_name}, gameobject: Holder{len(extra)}, create: true}}"
         )
