@@ -38,6 +38,26 @@ _SCALARS = {
     "bool": st.sampled_from(["true", "false"]),
     "string": st.sampled_from(["/topic", "a b", "''", "'#x: y'", '"q\\"uote"']),
 }
+
+
+def _refers(field: CatalogField) -> str | None:
+    """The class a reference field holds (None for any other field)."""
+    kind = field.unity.removesuffix("[]")
+    return kind[4:].rsplit(".", 1)[-1] if kind.startswith("ref:") else None
+
+
+# Stock scripts with a field of a ROS# script class, drawn more often than the others.
+REFERRING = [
+    s for s in STOCK if any(_refers(f) not in (None, "Transform", "GameObject") for f in s.fields)
+]
+# A class -> the first attachable ROS# script of that class or deriving from it.
+_CONCRETE = {
+    name: script
+    for script in reversed(STOCK)
+    for name in (script.class_name, *script.bases)
+    if name not in ("MonoBehaviour",)
+}
+_BUILT_IN = {"ref:Camera": "Main Camera", "ref:Light": "Directional Light"}
 _STRUCTS = {
     "Vector2": "{x: 1, y: -2}",
     "Vector3": "{x: 0.5, y: 0, z: -1}",
@@ -54,8 +74,14 @@ def fresh(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return root
 
 
-def _field_value(field: CatalogField, targets: list[str]) -> st.SearchStrategy[str] | None:
-    """A strategy for a manifest value of ``field`` (None: a kind not drawn here)."""
+def _field_value(
+    field: CatalogField, targets: list[str], holders: dict[str, list[str]]
+) -> st.SearchStrategy[str] | None:
+    """A strategy for a manifest value of ``field`` (None: a kind not drawn here).
+
+    ``holders`` maps a class to the GameObjects the manifest puts a script of it (or of a
+    subclass) on; a field of a script class refers to one of them.
+    """
     kind = field.unity.removesuffix("[]")
     one: st.SearchStrategy[str] | None
     if kind in _SCALARS:
@@ -66,8 +92,12 @@ def _field_value(field: CatalogField, targets: list[str]) -> st.SearchStrategy[s
         one = st.sampled_from(sorted(CATALOG.enums[kind[5:]]))
     elif kind in ("ref:Transform", "ref:GameObject"):
         one = st.sampled_from(targets).map(lambda p: f'"@{p}"')
+    elif kind in _BUILT_IN:
+        one = st.just(f'"@{_BUILT_IN[kind]}"')
+    elif kind.startswith("ref:") and holders.get(kind[4:].rsplit(".", 1)[-1]):
+        one = st.sampled_from(holders[kind[4:].rsplit(".", 1)[-1]]).map(lambda p: f'"@{p}"')
     else:
-        return None  # a reference to a component: covered by test_rossharp_scripts
+        return None  # a component nothing in this manifest provides
     if field.unity.endswith("[]"):
         return st.lists(one, max_size=2).map(lambda items: "[" + ", ".join(items) + "]")
     return one
@@ -105,9 +135,27 @@ def manifests(draw: st.DrawFn) -> str:
             f'  - {{name: /reset, type: std_srvs/srv/Trigger, role: {role}, gameobject: "{place}",'
             " create: true}",
         ]
-    stock = draw(st.lists(st.tuples(st.sampled_from(STOCK), places), max_size=3, unique=True))
+    scripts = st.one_of(st.sampled_from(STOCK), st.sampled_from(REFERRING))
+    stock = draw(st.lists(st.tuples(scripts, places), max_size=4, unique=True))
+    # Scripts the drawn ones refer to by class (JointStatePublisher's JointStateReaders...),
+    # added on a drawn GameObject so that such references get drawn too.
+    for script, _ in list(stock):
+        for field in script.fields:
+            wanted = field.unity.removesuffix("[]").rsplit(".", 1)[-1]
+            concrete = _CONCRETE.get(wanted) if field.unity.startswith("ref:") else None
+            if concrete is not None and draw(st.booleans()):
+                stock.append((concrete, draw(places)))
     stock = list({(s.class_name, p): (s, p) for s, p in stock}.values())
     used |= {p for _, p in stock}
+    # Where exactly one script fits a class: a reference there is not ambiguous.
+    fitting: dict[tuple[str, str], int] = {}
+    for script, place in stock:
+        for name in (script.class_name, *script.bases):
+            fitting[name, place] = fitting.get((name, place), 0) + 1
+    holders: dict[str, list[str]] = {}
+    for (name, place), count in sorted(fitting.items()):
+        if count == 1:
+            holders.setdefault(name, []).append(place)
     targets = sorted(used | set(EXISTING))
     if stock:
         lines.append("components:")
@@ -117,17 +165,20 @@ def manifests(draw: st.DrawFn) -> str:
             f'    gameobject: "{place}"',
             "    create: true",
         ]
-        fields = _fields(draw, script, targets)
+        fields = _fields(draw, script, targets, holders)
         if fields:
             lines.append("    fields: {" + ", ".join(fields) + "}")
     return "\n".join(lines) + "\n"
 
 
-def _fields(draw: st.DrawFn, script: CatalogScript, targets: list[str]) -> list[str]:
+def _fields(
+    draw: st.DrawFn, script: CatalogScript, targets: list[str], holders: dict[str, list[str]]
+) -> list[str]:
     chosen = draw(st.lists(st.sampled_from(script.fields), unique=True)) if script.fields else []
+    chosen += [f for f in script.fields if f not in chosen and _refers(f) in holders]
     found = []
     for field in chosen:
-        strategy = _field_value(field, targets)
+        strategy = _field_value(field, targets, holders)
         if strategy is not None:
             found.append(f"{field.name}: {draw(strategy)}")
     return found

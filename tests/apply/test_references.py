@@ -258,3 +258,27 @@ def test_a_rosharp_list_of_scripts_refers_to_each_by_class(project: Path) -> Non
     reader = _component(doc, "Joint", "JointStateReader")
     assert _field(doc, "JointStateReaders") == f"- {{fileID: {reader}}}\n  - {{fileID: {reader}}}"
     assert run_cli("apply", "--check", str(manifest)).code == 0
+
+
+def test_a_field_typed_as_a_generated_script_settles_on_the_first_run(project: Path) -> None:
+    build_tree(
+        project,
+        {
+            "Assets/Scripts/Dash.cs": "using UnityEngine;\npublic class Dash : MonoBehaviour\n"
+            "{\n    public RosGenerated.OdomSubscriber Odom;\n}\n"
+        },
+    )
+    manifest = project / "robot.yaml"
+    manifest.write_text(
+        HEADER.split("components:")[0]
+        + "topics:\n  - {name: /odom, type: nav_msgs/msg/Odometry, direction: subscribe, "
+        + "gameobject: Robot}\ncomponents:\n"
+        + '  - {script: Dash, gameobject: Robot, fields: {Odom: "@Robot"}}\n'
+    )
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.err
+    doc = SceneDocument.load(project / "Assets" / "Scenes" / "Main.unity")
+    robot = doc.find_gameobject("Robot")
+    odom = [c.file_id for c in doc.components_of(robot) if c.script is not None]
+    assert _field(doc, "Odom") == f"{{fileID: {odom[0]}}}"
+    assert run_cli("apply", "--check", str(manifest)).code == 0

@@ -21,6 +21,7 @@ class ScriptFacts:
     rossharp: RosSharp
     scripts: dict[str, ScriptInfo]  # GUID -> the project's scripts
     rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
+    generated: frozenset[str] = frozenset()  # classes this plan generates (maybe not on disk yet)
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
     _read: dict[str, ProjectFacts | None] = field(default_factory=dict)
     _by_name: dict[str, list[ScriptInfo]] = field(default_factory=dict)
@@ -59,4 +60,10 @@ class ScriptFacts:
         return rossharp_catalog().named(class_name)
 
     def _is_script(self, class_name: str) -> bool:
-        return class_name in self._by_name or rossharp_catalog().named(class_name) is not None
+        # Generated classes count from the first run on, before their files exist, so that a
+        # field of that type resolves the same way on every run.
+        return (
+            class_name in self.generated
+            or class_name in self._by_name
+            or rossharp_catalog().named(class_name) is not None
+        )

@@ -590,7 +590,8 @@ def plan_scenes(
 ) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
     names = rossharp.class_names()
-    known = ScriptFacts(manifest.project_root, rossharp, scripts, names)
+    generated = frozenset(s.view.class_name for s in code.scripts)
+    known = ScriptFacts(manifest.project_root, rossharp, scripts, names, generated)
     ctx = _Context(manifest, code, rossharp, scripts, names, known, follow_renames)
     named = _scene_locations(manifest)
     locations = dict(named)
