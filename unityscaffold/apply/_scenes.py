@@ -19,6 +19,7 @@ from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._facts import ScriptFacts
 from unityscaffold.apply._identity import Moved, Named, moved_objects, now_at, report_moves
 from unityscaffold.apply._lock import LockComponent, LockFile
+from unityscaffold.apply._objects import Hooks, declare_objects
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._typed import check_names, typed_value
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
@@ -27,6 +28,7 @@ from unityscaffold.manifest.model import (
     Connector,
     Manifest,
     ObjectPath,
+    SceneObject,
     Service,
     StructValue,
     Topic,
@@ -42,6 +44,7 @@ from unityscaffold.unity import (
 )
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
+from unityscaffold.unity.ugui import UGUI_SCRIPTS, ugui_class, ugui_script
 from unityscaffold.unity.values import FieldValue
 
 __all__ = ["ScenePlan", "plan_scenes"]
@@ -90,10 +93,22 @@ class _SceneEditor:
         self.now = now  # manifest path -> where that GameObject is now (--follow-renames)
         self.wanted: set[tuple[str, str]] = set()
         self.attached: set[int] = set()  # fileIDs of the components the manifest asks for
+        self.keys: dict[tuple[str, str, int], list[str]] = {}  # (path, GUID, fileID) -> ids
+        self.adopted: dict[tuple[str, str, int, str], int] = {}  # ... + id -> instance taken
 
     def path(self, named: str) -> str:
         """Where the GameObject the manifest calls ``named`` is (renames followed)."""
         return self.now.get(named, named)
+
+    def _adoptable(self, go: GameObject, script: ScriptRef) -> SceneComponent | None:
+        """An instance of ``script`` on ``go`` that no entry claims (made in Unity, or before
+        the manifest gave ids), taken in m_Component order; None if there is none."""
+        ids = self.keys.get((go.path, script.guid, script.file_id), [])
+        keyed = {c.file_id for k in ids if (c := self.doc.keyed_component(go, script, k))}
+        for comp in self.doc.instances(go, script):
+            if comp.file_id not in self.attached and comp.file_id not in keyed:
+                return comp
+        return None
 
     def gameobject(self, path: str, create: bool, where: SourceLocation) -> GameObject:
         path = self.path(path)
@@ -131,16 +146,29 @@ class _SceneEditor:
         fields: list[tuple[str, FieldValue]],
         where: SourceLocation,
         entry: str,
+        key: str | None = None,
     ) -> SceneComponent:
         go = self.gameobject(path, create, where)
         path = go.path
         self.wanted.add((path, script.guid))
-        existed = self.doc.find_component(go, script.guid, script.file_id) is not None
+        adopt = None
+        if key is None:
+            existed = self.doc.find_component(go, script.guid, script.file_id) is not None
+        else:
+            existed = self.doc.keyed_component(go, script, key) is not None
+            slot = (path, script.guid, script.file_id, key)
+            if not existed and slot in self.adopted:
+                adopt = self.doc.component(self.adopted[slot])
+            elif not existed:
+                adopt = self._adoptable(go, script)
+            existed = existed or adopt is not None
         revision = self.doc.revision
         with located_at(where):
-            component = self.doc.ensure_component(go, script, fields)
+            component = self.doc.ensure_component(go, script, fields, key, adopt)
         self.attached.add(component.file_id)
-        name = script.class_name or script.guid
+        if adopt is not None and key is not None:
+            self.adopted[(path, script.guid, script.file_id, key)] = adopt.file_id
+        name = (script.class_name or script.guid) + (f"#{key}" if key else "")
         added = f"add {name} to {path}"
         if not existed and (path, script.guid) in self.owned:
             readded = f"re-add {name} to {path} (removed in Unity since the last apply)"
@@ -227,7 +255,7 @@ class _Context:
             if script.guid == guid:
                 return script.view.class_name
         info = self.scripts.get(guid)
-        return info.class_name if info else self.rossharp_names.get(guid)
+        return info.class_name if info else self.rossharp_names.get(guid) or ugui_class(guid)
 
     def facts(self, script: ScriptRef) -> CatalogScript | None:
         """What a ROS# or project script declares (None for a generated or unreadable one)."""
@@ -237,6 +265,11 @@ class _Context:
 
 
 def _component_script(ctx: _Context, item: Component) -> ScriptRef:
+    if item.guid is not None:
+        if item.dll_class is None:
+            return ScriptRef(item.guid, class_name=ctx.class_of(item.guid))
+        namespace, _, name = item.dll_class.rpartition(".")
+        return ScriptRef.for_dll_class(item.guid, namespace, name)
     where = item.locations.of("script")
     with located_at(where):
         if item.script.endswith(".cs"):
@@ -249,10 +282,13 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
         )
         if found is None and ctx.rossharp.knows(item.script):
             found = ctx.rossharp.script(item.script)
+        if found is None:
+            found = ugui_script(item.script)
     if found is None:
         names = sorted(
             {info.class_name for info in ctx.scripts.values()}
             | {s.class_name for s in rossharp_catalog().scripts if s.attachable}
+            | set(UGUI_SCRIPTS)
         )
         close = difflib.get_close_matches(item.script, names, n=3)
         hint = (
@@ -423,6 +459,13 @@ def _named(ctx: _Context, scene: str) -> list[Named]:
         found.append(Named(entry.gameobject, entry.locations.of("gameobject")))
         for item in entry.fields:
             found += [Named(p, item.location, True) for p in _paths_in(item.value)]
+    for obj in m.objects:
+        if obj.scene != scene:
+            continue
+        found.append(Named(obj.path, obj.locations.of("path")))
+        for comp in obj.components:
+            for item in comp.fields:
+                found += [Named(p, item.location, True) for p in _paths_in(item.value)]
     return found
 
 
@@ -469,6 +512,19 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
     connector_id = 0
     connector_script = None
     scripts = {id(c): _component_script(ctx, c) for c in m.components if c.scene == plan.relative}
+    for c in m.components:
+        if c.scene == plan.relative and c.key is not None:
+            ref = scripts[id(c)]
+            slot = (editor.path(c.gameobject), ref.guid, ref.file_id)
+            editor.keys.setdefault(slot, []).append(c.key)
+    objects = [o for o in m.objects if o.scene == plan.relative]
+    if objects:
+
+        def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
+            return _typed_reference(ctx, editor, path, declared, where)
+
+        hooks = Hooks(editor.path, editor.record, resolve)
+        declare_objects(doc, objects, m.project_root, plan.edits, hooks)
     needs_connector = [
         c
         for c in m.components
@@ -539,12 +595,24 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             values = _catalog_values(ctx, editor, facts, entry, references=False)
             deferred.append((entry, ref, facts, where))
         editor.attach(
-            entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
+            entry.gameobject,
+            entry.create,
+            ref,
+            values,
+            where,
+            f"component {entry.label}",
+            entry.key,
         )
     for entry, ref, facts, where in deferred:
         values = _catalog_values(ctx, editor, facts, entry, references=True)
         editor.attach(
-            entry.gameobject, entry.create, ref, values, where, f"component {entry.script}"
+            entry.gameobject,
+            entry.create,
+            ref,
+            values,
+            where,
+            f"component {entry.label}",
+            entry.key,
         )
         _requirements(editor, ctx, facts, entry)
     editor.prune(lock.components, editor.wanted)
@@ -565,11 +633,12 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
     """Where each scene is named: the item's own ``scene`` key, else the top-level one."""
     found: dict[str, SourceLocation] = {}
-    items: tuple[Connector | Topic | Service | Component, ...] = (
+    items: tuple[Connector | Topic | Service | Component | SceneObject, ...] = (
         manifest.connector,
         *manifest.topics,
         *manifest.services,
         *manifest.components,
+        *manifest.objects,
     )
     for item in items:
         own = item.locations.has("scene")

@@ -14,6 +14,7 @@ from unityscaffold.unity.index import GameObject
 from unityscaffold.unity.project import find_project_root, script_index, script_ref_for_file
 from unityscaffold.unity.scene import GameObjectNotFound, SceneDocument
 from unityscaffold.unity.setvalue import component_label, parse_assignment, parse_value
+from unityscaffold.unity.ugui import UGUI_SCRIPTS
 from unityscaffold.unity.values import ScriptRef
 
 app = typer.Typer(help="Inspect Unity scenes and attach components.", no_args_is_help=True)
@@ -28,9 +29,10 @@ _SET_HELP = (
 
 
 def _script_names(scene_path: Path) -> dict[str, str]:
-    """GUID -> class name: the project's scripts, and ROS#'s from its catalog (so that a scene
-    names them before Unity has installed the package)."""
-    names = rossharp_catalog().all_class_names()
+    """GUID -> class name: the project's scripts, ROS#'s from its catalog and uGUI's (so that a
+    scene names them before Unity has installed the packages)."""
+    names = {guid: name for name, (_, guid) in UGUI_SCRIPTS.items()}
+    names.update(rossharp_catalog().all_class_names())
     root = find_project_root(scene_path.parent)
     if root is None:
         return names

@@ -6,7 +6,7 @@ from collections.abc import Sequence
 
 from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest._read import Reader
-from unityscaffold.manifest.model import Component, Service, Topic
+from unityscaffold.manifest.model import Component, SceneObject, Service, Topic
 
 __all__ = ["check_across"]
 
@@ -63,22 +63,62 @@ def _class_clashes(r: Reader, items: Sequence[tuple[str, Topic | Service]]) -> N
 
 
 def _component_repeats(r: Reader, components: Sequence[Component]) -> None:
-    # apply recognises a component by scene + GameObject + script, so two entries would fight
-    first: dict[tuple[str, str, str], SourceLocation] = {}
+    # apply recognises a component by scene + GameObject + script (+ id), so two entries with
+    # the same of all would fight over one component
+    first: dict[tuple[str, str, str], Component] = {}
     for c in components:
-        key = (c.scene, c.gameobject, c.script)
-        if key in first:
-            r.error(
-                c.locations.item,
-                f"component '{c.script}' is listed twice for GameObject '{c.gameobject}'",
-                hint=f"merge its fields into the entry on line {first[key].line}",
+        key = (c.scene, c.gameobject, f"{c.guid}:{c.dll_class}" if c.guid else c.script)
+        other = first.get(key)
+        if other is None:
+            first[key] = c
+            continue
+        if c.key is not None and other.key is not None and c.key != other.key:
+            continue
+        line = other.locations.item.line
+        if c.key is not None and c.key == other.key:
+            hint = f"the entry on line {line} has this id; give each instance its own"
+        elif c.key is None and other.key is None:
+            hint = (
+                f"merge its fields into the entry on line {line}, or give both an 'id:' "
+                "to have two instances"
             )
         else:
-            first[key] = c.locations.item
+            hint = f"give this entry and the one on line {line} each an 'id:'"
+        r.error(
+            c.locations.of("id") if c.key else c.locations.item,
+            f"component '{c.script}' is listed twice for GameObject '{c.gameobject}'",
+            hint=hint,
+        )
+
+
+def _object_repeats(r: Reader, objects: Sequence[SceneObject]) -> None:
+    seen: dict[tuple[str, str], SourceLocation] = {}
+    for o in objects:
+        key = (o.scene, o.path)
+        if key in seen:
+            r.error(
+                o.locations.of("path"),
+                f"object '{o.path}' is declared twice",
+                hint=f"merge it into the entry on line {seen[key].line}",
+            )
+        seen.setdefault(key, o.locations.of("path"))
+        kinds: dict[tuple[str, str | None], SourceLocation] = {}
+        for b in o.components:
+            if (b.type, b.key) in kinds:
+                r.error(
+                    b.location,
+                    f"{b.type} is listed twice on '{o.path}'",
+                    hint="give each one its own 'id:' to have two",
+                )
+            kinds.setdefault((b.type, b.key), b.location)
 
 
 def check_across(
-    r: Reader, topics: Sequence[Topic], services: Sequence[Service], components: Sequence[Component]
+    r: Reader,
+    topics: Sequence[Topic],
+    services: Sequence[Service],
+    components: Sequence[Component],
+    objects: Sequence[SceneObject] = (),
 ) -> None:
     repeated_topics = _duplicates(r, topics, "topic")
     repeated_services = _duplicates(r, services, "service")
@@ -88,3 +128,4 @@ def check_across(
     generated += [("service", s) for i, s in enumerate(services) if i not in repeated_services]
     _class_clashes(r, generated)
     _component_repeats(r, components)
+    _object_repeats(r, objects)

@@ -256,17 +256,32 @@ def read_component(r: Reader, node: YNode, ctx: Context) -> Component | None:
     m = r.mapping(node, spec.COMPONENT)
     if m is None:
         return None
-    script = _script(r, m, ctx)
+    script = _script(r, m, ctx) if m.get("script") is not None else None
+    guid = r.text(m, "guid", "a GUID: 32 lowercase hex digits", spec.GUID)
+    dll_class = r.text(m, "dll_class", "Namespace.Class of a script inside a DLL", spec.NAMESPACE)
+    if m.get("script") is None and m.get("guid") is None:
+        r.error(
+            m.location,
+            "component is missing required key 'script' (or 'guid')",
+            hint="script: the class name (TwistSubscriber, Image) or the .cs path; "
+            "guid: a package script's GUID",
+        )
+    if (entry := m.get("dll_class")) is not None and m.get("guid") is None:
+        r.error(entry.key_location, "'dll_class' goes with 'guid' (the DLL's GUID)")
     gameobject = read_gameobject(r, m, None)
+    label = script or (dll_class.rsplit(".", 1)[-1] if dll_class else guid)
     component = Component(
-        script=script or "",
+        script=label or "",
         gameobject=gameobject or "",
         scene=read_scene(r, m, ctx, "component") or "",
         create=_create(r, m, ctx),
         fields=read_fields(r, m),
         locations=locations(m),
+        guid=guid,
+        dll_class=dll_class,
+        key=r.text(m, "id", "a short name of letters, digits, '_', '-' or '.'", spec.KEY),
     )
-    return component if script and gameobject else None
+    return component if label and gameobject else None
 
 
 def _script(r: Reader, m: YMap, ctx: Context) -> str | None:

@@ -22,6 +22,7 @@ from unityscaffold.manifest.model import (
     Role,
     Serializer,
 )
+from unityscaffold.unity.builtins import BUILTIN_LAYERS, BUILTIN_TYPES
 
 __all__ = ["SECTIONS", "Key", "Section", "patterns"]
 
@@ -36,6 +37,8 @@ NAMESPACE = f"^{CSHARP_IDENTIFIER}([.]{CSHARP_IDENTIFIER})*$"
 GAMEOBJECT = "^[^/]+(/[^/]+)*$"
 SCENE = "[.]unity$"
 URL = "^wss?://[^\\s/]+(/\\S*)?$"
+GUID = "^[0-9a-f]{32}$"
+KEY = "^[A-Za-z0-9_.-]+$"
 #: The largest C# ``int``: timeout, throttle and queue become int fields in C#.
 INT32_MAX = 2**31 - 1
 #: The positive range of a C# ``float`` (rate): its smallest normal value and its largest.
@@ -96,6 +99,8 @@ def patterns() -> dict[str, str]:
         "not_portable": NOT_PORTABLE,
         "not_relative": NOT_RELATIVE,
         "keyword_part": KEYWORD_PART,
+        "guid": GUID,
+        "key": KEY,
     }
 
 
@@ -212,8 +217,14 @@ TOP = Section(
         Key("services", "Services Unity calls or provides.", _list_of(_ref("service"))),
         Key(
             "components",
-            "Existing MonoBehaviours (yours or ROS#'s) to add with field values.",
+            "Existing MonoBehaviours (yours, ROS#'s or a package's) to add with field values.",
             _list_of(_ref("component")),
+        ),
+        Key(
+            "objects",
+            "GameObjects to create and keep as declared: transform, active flag, tag, layer, "
+            "UI layout and built-in components (Camera, Light, colliders, Canvas, …).",
+            _list_of(_ref("object")),
         ),
     ),
     rules=(
@@ -371,8 +382,8 @@ COMPONENT = Section(
     (
         Key(
             "script",
-            "Class name of the MonoBehaviour (e.g. `TwistSubscriber`) or the path of "
-            "its `.cs` file, relative to the project.",
+            "Class name of the MonoBehaviour (e.g. `TwistSubscriber`, or uGUI's `Image`) or the "
+            "path of its `.cs` file, relative to the project. Required unless `guid` is given.",
             {
                 "type": "string",
                 "anyOf": [
@@ -380,7 +391,23 @@ COMPONENT = Section(
                     {"pattern": NAMESPACE},
                 ],
             },
-            required=True,
+        ),
+        Key(
+            "guid",
+            "GUID of a package's script (from its `.meta`), or of the DLL holding it with "
+            "`dll_class`; `script` then only names it in messages.",
+            {"type": "string", "pattern": GUID},
+        ),
+        Key(
+            "dll_class",
+            "`Namespace.Class` of the script inside the DLL whose GUID is `guid`.",
+            {"type": "string", "pattern": NAMESPACE},
+        ),
+        Key(
+            "id",
+            "Tells apart several instances of one script on one GameObject (e.g. two "
+            "`JoyAxisReader`s): any short name, kept stable across runs.",
+            {"type": "string", "pattern": KEY},
         ),
         Key(
             "gameobject",
@@ -402,6 +429,92 @@ COMPONENT = Section(
             },
         ),
     ),
+    rules=({"anyOf": [{"required": ["script"]}, {"required": ["guid"]}]},),
 )
 
-SECTIONS: tuple[Section, ...] = (TOP, CONNECTOR, TOPIC, SERVICE, COMPONENT)
+_VEC3 = {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3}
+_VEC2 = {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}
+
+UI = Section(
+    "ui",
+    "ui",
+    "A UI object's RectTransform; keys left out keep the scene's values (new: Unity's defaults).",
+    (
+        Key("anchor_min", "`m_AnchorMin`, e.g. `[0, 0]`.", _VEC2),
+        Key("anchor_max", "`m_AnchorMax`, e.g. `[1, 1]`.", _VEC2),
+        Key("position", "`m_AnchoredPosition` in pixels, e.g. `[150, 150]`.", _VEC2),
+        Key("size", "`m_SizeDelta` in pixels, e.g. `[100, 100]`.", _VEC2),
+        Key("pivot", "`m_Pivot`, e.g. `[0.5, 0.5]`.", _VEC2),
+    ),
+)
+
+BUILTIN = Section(
+    "built-in component",
+    "builtinComponent",
+    "A built-in Unity component of a declared object.",
+    (
+        Key(
+            "type",
+            "Class of the component: " + ", ".join(f"`{name}`" for name in BUILTIN_TYPES) + ".",
+            {"enum": list(BUILTIN_TYPES)},
+            required=True,
+        ),
+        Key(
+            "id",
+            "Tells apart several components of one class on the object.",
+            {"type": "string", "pattern": KEY},
+        ),
+        Key(
+            "fields",
+            "Values by Unity's serialized name (`m_Mass`, `m_IsTrigger`, `m_Size`); the rest "
+            "keep Unity's defaults.",
+            {"type": ["object", "null"], "additionalProperties": _ref("fieldValue")},
+        ),
+    ),
+)
+
+OBJECT = Section(
+    "object",
+    "object",
+    "A GameObject created if missing and kept as declared; keys left out keep the scene's values.",
+    (
+        Key(
+            "path",
+            "Hierarchy path (`Parent/Child`); missing parents are created as empty objects.",
+            _GAMEOBJECT,
+            required=True,
+        ),
+        _scene_key("object"),
+        Key("position", "Local position `[x, y, z]`.", _VEC3),
+        Key(
+            "rotation",
+            "Local rotation as Euler angles in degrees `[x, y, z]`, as the Inspector shows it.",
+            _VEC3,
+        ),
+        Key("scale", "Local scale `[x, y, z]`.", _VEC3),
+        Key("active", "Whether the GameObject is active.", _BOOL),
+        Key(
+            "tag",
+            "Tag: a built-in one (`MainCamera`, `Player`, …) or one in "
+            "ProjectSettings/TagManager.asset.",
+            _STR,
+        ),
+        Key(
+            "layer",
+            "Layer number 0–31, or a built-in layer's name (" + ", ".join(BUILTIN_LAYERS) + ").",
+            {"anyOf": [{"type": "integer", "minimum": 0, "maximum": 31}, {"enum": BUILTIN_LAYERS}]},
+        ),
+        Key(
+            "ui",
+            "`true` (or a mapping of its layout) for a UI object with a RectTransform.",
+            {"anyOf": [{"type": "boolean"}, _ref("ui")]},
+        ),
+        Key(
+            "components",
+            "Built-in components: a class name (`Camera`) or `{type, id, fields}`.",
+            _list_of({"anyOf": [{"enum": list(BUILTIN_TYPES)}, _ref("builtinComponent")]}),
+        ),
+    ),
+)
+
+SECTIONS: tuple[Section, ...] = (TOP, CONNECTOR, TOPIC, SERVICE, COMPONENT, OBJECT, UI, BUILTIN)

@@ -18,6 +18,7 @@ from unityscaffold.manifest._entries import (
     read_service,
     read_topic,
 )
+from unityscaffold.manifest._objects import read_object
 from unityscaffold.manifest._paths import folder_path, project_path
 from unityscaffold.manifest._read import Reader
 from unityscaffold.manifest._yaml import YEntry, YMap, YScalar, compose
@@ -121,10 +122,12 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     topics = [read_topic(r, n, ctx) for n in r.items(top, "topics")]
     services = [read_service(r, n, ctx) for n in r.items(top, "services")]
     components = [read_component(r, n, ctx) for n in r.items(top, "components")]
+    objects = [read_object(r, n, ctx) for n in r.items(top, "objects")]
     good_topics = tuple(t for t in topics if t is not None)
     good_services = tuple(s for s in services if s is not None)
     good_components = tuple(c for c in components if c is not None)
-    check_across(r, good_topics, good_services, good_components)
+    good_objects = tuple(o for o in objects if o is not None)
+    check_across(r, good_topics, good_services, good_components, good_objects)
     if version is None or ros is None:
         return None
     include = r.boolean(top, "include_shipped")
@@ -144,6 +147,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         services=good_services,
         components=good_components,
         locations=locations(top),
+        objects=good_objects,
     )
 
 

@@ -20,6 +20,7 @@ __all__ = [
     "CSHARP_IDENTIFIER",
     "CSHARP_KEYWORDS",
     "MANIFEST_VERSION",
+    "BuiltinComponent",
     "Component",
     "ComponentField",
     "Connector",
@@ -29,7 +30,9 @@ __all__ = [
     "Manifest",
     "ObjectPath",
     "Protocol",
+    "RectLayout",
     "Role",
+    "SceneObject",
     "Serializer",
     "Service",
     "StructValue",
@@ -195,7 +198,10 @@ class Service:
 class Component:
     """An existing MonoBehaviour to put on a GameObject with the given field values.
 
-    ``script`` is a class name (``TwistSubscriber``) or a project-relative ``.cs`` path.
+    ``script`` is a class name (``TwistSubscriber``) or a project-relative ``.cs`` path; for a
+    package script named by ``guid`` (and ``dll_class`` for one inside a DLL) it is the label
+    shown in messages. ``key`` (the manifest's ``id``) tells apart several instances of one
+    script on one GameObject.
     """
 
     script: str
@@ -204,9 +210,63 @@ class Component:
     create: bool
     fields: tuple[ComponentField, ...]
     locations: Locations
+    guid: str | None = None
+    dll_class: str | None = None
+    key: str | None = None
+
+    @property
+    def label(self) -> str:
+        """How messages and the lock name the entry: ``JoyAxisReader`` or ``JoyAxisReader#x``."""
+        return f"{self.script}#{self.key}" if self.key else self.script
 
     def field(self, name: str) -> ComponentField | None:
         return next((f for f in self.fields if f.name == name), None)
+
+
+@dataclass(frozen=True, slots=True)
+class BuiltinComponent:
+    """A built-in Unity component (``Camera``, ``BoxCollider``, …) on a declared object.
+
+    ``fields`` are Unity's serialized names (``m_Mass``); ``key`` tells apart several of one class.
+    """
+
+    type: str
+    fields: tuple[ComponentField, ...]
+    key: str | None
+    location: SourceLocation
+
+
+@dataclass(frozen=True, slots=True)
+class RectLayout:
+    """A UI object's RectTransform values; None keeps what the scene has (or Unity's default)."""
+
+    anchor_min: tuple[float, float] | None = None
+    anchor_max: tuple[float, float] | None = None
+    position: tuple[float, float] | None = None  # m_AnchoredPosition
+    size: tuple[float, float] | None = None  # m_SizeDelta
+    pivot: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class SceneObject:
+    """A GameObject the manifest declares, created if missing and kept as written.
+
+    Only what is written is enforced: a value left out keeps what the scene has. ``rotation`` is
+    Euler angles in degrees (Unity's Z, then X, then Y order); ``layer`` is 0–31; ``ui`` is None
+    for a plain Transform, else the RectTransform's layout.
+    """
+
+    path: str
+    scene: str
+    position: tuple[float, float, float] | None
+    rotation: tuple[float, float, float] | None
+    scale: tuple[float, float, float] | None
+    active: bool | None
+    tag: str | None
+    layer: int | None
+    ui: RectLayout | None
+    components: tuple[BuiltinComponent, ...]
+    locations: Locations
 
 
 @dataclass(frozen=True, slots=True)
@@ -233,6 +293,7 @@ class Manifest:
     services: tuple[Service, ...]
     components: tuple[Component, ...]
     locations: Locations
+    objects: tuple[SceneObject, ...] = ()
 
     @property
     def output(self) -> str:
@@ -257,6 +318,7 @@ class Manifest:
         named.update(t.scene for t in self.topics)
         named.update(s.scene for s in self.services)
         named.update(c.scene for c in self.components)
+        named.update(o.scene for o in self.objects)
         return tuple(sorted(named))
 
 

@@ -40,12 +40,21 @@ topics:
 services:
 #  - {name: /reset, type: std_srvs/Trigger, role: client}
 
-# Existing MonoBehaviours (yours or ROS#'s) with field values; "@Path/To/Object" refers to a
-# GameObject in the same scene.
+# Existing MonoBehaviours (yours, ROS#'s or uGUI's) with field values; "@Path/To/Object"
+# refers to a GameObject in the same scene. Add `id:` to have two of one script on one object.
 components:
 #  - script: TwistSubscriber
 #    gameobject: RosConnector
 #    fields: {Topic: /cmd_vel_unity, SubscribedTransform: "@Robot/base_link"}
+
+# GameObjects created if missing and kept as written: position, rotation (Euler degrees),
+# scale, active, tag, layer, ui (RectTransform) and built-in components (Camera, Light,
+# Rigidbody, Box/Sphere/CapsuleCollider, Canvas, CanvasRenderer, AudioListener).
+objects:
+#  - path: Robot/base_link
+#    position: [0, 0.1, 0]
+#    rotation: [0, 90, 0]
+#    components: [Rigidbody, {type: BoxCollider, fields: {m_Size: [0.5, 0.2, 0.8]}}]
 """)
 
 

@@ -13,9 +13,17 @@ from unityscaffold.unity import _fields as F
 from unityscaffold.unity._emit import emit_field
 from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._split import Doc
+from unityscaffold.unity.builtins import BuiltinClass
 from unityscaffold.unity.values import ScriptRef
 
-__all__ = ["component_item", "new_gameobject", "new_monobehaviour", "new_transform"]
+__all__ = [
+    "component_item",
+    "new_builtin",
+    "new_gameobject",
+    "new_monobehaviour",
+    "new_rect_transform",
+    "new_transform",
+]
 
 _NULL = "{fileID: 0}"
 _MODERN = ["m_ObjectHideFlags", "m_CorrespondingSourceObject", "m_PrefabInstance", "m_PrefabAsset"]
@@ -31,6 +39,7 @@ _GO_TAIL = [
     "m_IsActive",
 ]
 _TRANSFORM_POSE = ["m_LocalRotation", "m_LocalPosition", "m_LocalScale"]
+_RECT = ["m_AnchorMin", "m_AnchorMax", "m_AnchoredPosition", "m_SizeDelta", "m_Pivot"]
 _MB_TAIL = [
     "m_GameObject",
     "m_Enabled",
@@ -54,6 +63,12 @@ def _builtin_layout(kind: str, era: SerializationEra) -> list[str]:
         return [*head, "serializedVersion", *_GO_TAIL]
     if kind == "MonoBehaviour":
         return [*head, *_MB_TAIL]
+    if kind == "RectTransform":  # no serializedVersion, the rect after the Transform's fields
+        if era.root_order:
+            pose = [*_TRANSFORM_POSE, "m_Children", "m_Father", "m_RootOrder"]
+        else:
+            pose = [*_TRANSFORM_POSE, "m_ConstrainProportionsScale", "m_Children", "m_Father"]
+        return [*head, "m_GameObject", *pose, "m_LocalEulerAnglesHint", *_RECT]
     if era.root_order:
         return [
             *head,
@@ -157,6 +172,46 @@ def new_transform(
     if exemplar is None:
         values["serializedVersion"] = "2"
     return _render(f"--- !u!4 &{file_id}", "Transform", era, exemplar, values)
+
+
+def new_rect_transform(
+    era: SerializationEra,
+    exemplar: Doc | None,
+    file_id: int,
+    gameobject_id: int,
+    father_id: int,
+    root_order: int | None,
+) -> str:
+    """A UI object's RectTransform, with the values Unity gives a new one."""
+    values: dict[str, str | list[str]] = {
+        **_COMMON,
+        "m_PrefabInternal": _prefab_internal(exemplar),
+        "m_GameObject": f"{{fileID: {gameobject_id}}}",
+        "m_LocalRotation": "{x: 0, y: 0, z: 0, w: 1}",
+        "m_LocalPosition": "{x: 0, y: 0, z: 0}",
+        "m_LocalScale": "{x: 1, y: 1, z: 1}",
+        "m_ConstrainProportionsScale": "0",
+        "m_Children": "[]",
+        "m_Father": f"{{fileID: {father_id}}}",
+        "m_LocalEulerAnglesHint": "{x: 0, y: 0, z: 0}",
+        "m_AnchorMin": "{x: 0.5, y: 0.5}",
+        "m_AnchorMax": "{x: 0.5, y: 0.5}",
+        "m_AnchoredPosition": "{x: 0, y: 0}",
+        "m_SizeDelta": "{x: 100, y: 100}",
+        "m_Pivot": "{x: 0.5, y: 0.5}",
+    }
+    if root_order is not None:
+        values["m_RootOrder"] = str(root_order)
+    return _render(f"--- !u!224 &{file_id}", "RectTransform", era, exemplar, values)
+
+
+def new_builtin(file_id: int, gameobject_id: int, builtin: BuiltinClass) -> str:
+    """A built-in component as Unity 2022.3 writes a new one (see ``unity/builtins.py``)."""
+    head = "".join(f"  {key}: {_COMMON[key]}\n" for key in _MODERN)
+    return (
+        f"--- !u!{builtin.class_id} &{file_id}\n{builtin.name}:\n{head}"
+        f"  m_GameObject: {{fileID: {gameobject_id}}}\n{builtin.body}"
+    )
 
 
 def class_identifier(era: SerializationEra, script: ScriptRef) -> str:

@@ -17,6 +17,7 @@ from unityscaffold.unity._builders import (
     component_item,
     new_gameobject,
     new_monobehaviour,
+    new_rect_transform,
     new_transform,
 )
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
@@ -27,7 +28,13 @@ from unityscaffold.unity._split import Doc
 from unityscaffold.unity.index import GameObject, SceneComponent
 from unityscaffold.unity.values import FieldValue, ScriptRef
 
-__all__ = ["create_path", "ensure_component", "remove_component", "set_fields"]
+__all__ = [
+    "component_id_parts",
+    "create_path",
+    "ensure_component",
+    "remove_component",
+    "set_fields",
+]
 
 _FIELD_NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?: [A-Za-z0-9_]+)*")
 _STRUCTURAL = frozenset(
@@ -140,21 +147,23 @@ def _prefab_go_slot(docs: Documents, go_id: int) -> int:
 
 
 def create_path(
-    docs: Documents, parent: GameObject | None, names: Sequence[str], start: int
+    docs: Documents, parent: GameObject | None, names: Sequence[str], start: int, ui: bool = False
 ) -> int:
     """Create ``names[start:]`` under ``parent`` (the existing ``names[:start]``, or the root);
-    return the fileID of the last GameObject created."""
+    return the fileID of the last GameObject created, which gets a RectTransform if ``ui``."""
     parent_id: int | None = None
     if parent is not None:
         _require_editable(docs, parent)
         parent_id = parent.file_id
     for level in range(start, len(names)):
-        parent_id = _create(docs, parent_id, "/".join(names[: level + 1]), names[level])
+        last = level == len(names) - 1
+        path = "/".join(names[: level + 1])
+        parent_id = _create(docs, parent_id, path, names[level], ui and last)
     assert parent_id is not None
     return parent_id
 
 
-def _create(docs: Documents, parent_id: int | None, path: str, name: str) -> int:
+def _create(docs: Documents, parent_id: int | None, path: str, name: str, ui: bool) -> int:
     era = docs.era
     go_id = stable_file_id(("GameObject", path), _Taken(docs))
     tr_id = stable_file_id(("Transform", path), _Taken(docs, go_id))
@@ -175,13 +184,18 @@ def _create(docs: Documents, parent_id: int | None, path: str, name: str) -> int
             raise UserError(f"{docs.path}: '{hierarchy.paths[parent_id]}' has no Transform")
         order = len(F.list_refs(parent_tr, "m_Children"))
     father = parent_tr.file_id if parent_tr is not None else 0
+    tr_class = 224 if ui else 4
     go_text = new_gameobject(era, _exemplar(docs, 1), go_id, name, tr_id)
-    tr_text = new_transform(
-        era, _exemplar(docs, 4), tr_id, go_id, father, order if era.root_order else None
+    if ui:  # the UI layer, as Unity gives a GameObject created under a Canvas
+        go_text = go_text.replace(component_item(era, 4, tr_id), component_item(era, 224, tr_id))
+        go_text = go_text.replace("\n  m_Layer: 0\n", "\n  m_Layer: 5\n")
+    new_tr = new_rect_transform if ui else new_transform
+    tr_text = new_tr(
+        era, _exemplar(docs, tr_class), tr_id, go_id, father, order if era.root_order else None
     )
     index = None if docs.is_scene else _prefab_go_slot(docs, go_id)
     docs.insert(Doc(1, go_id, False, go_text), index)
-    docs.insert(Doc(4, tr_id, False, tr_text), None if index is None else index + 1)
+    docs.insert(Doc(tr_class, tr_id, False, tr_text), None if index is None else index + 1)
     if parent_tr is not None:
         if F.field_span(parent_tr, "m_Children") is None:
             # Older Unity versions and some prefabs leave the key out of a childless Transform;
@@ -208,18 +222,17 @@ def ensure_component(
     existing: SceneComponent | None,
     script: ScriptRef,
     fields: Sequence[tuple[str, FieldValue]],
+    key: str | None = None,
 ) -> int:
-    """Update ``existing`` (``target``'s component running ``script``) or attach a new one;
-    return the component's fileID."""
+    """Update ``existing`` (``target``'s component running ``script``) or attach a new one
+    (whose fileID derives from ``key`` too when given); return the component's fileID."""
     _require_editable(docs, target)
     if existing is not None:
         set_fields(docs, docs.require(existing.file_id), fields)
         return existing.file_id
     go_doc = docs.require(target.file_id)
     lines = [line for name, value in fields for line in _emit(docs, name, value)]
-    comp_id = stable_file_id(
-        ("MonoBehaviour", target.path, script.guid, str(script.file_id)), _Taken(docs)
-    )
+    comp_id = stable_file_id(component_id_parts(target, script, key), _Taken(docs))
     era = docs.era
     text = new_monobehaviour(era, _exemplar(docs, 114), comp_id, target.file_id, script, lines)
     index = None if docs.is_scene else _block_end(docs, go_doc)
@@ -227,6 +240,12 @@ def ensure_component(
     T.append_list_item(go_doc, "m_Component", component_item(era, 114, comp_id))
     docs.touch(go_doc)
     return comp_id
+
+
+def component_id_parts(target: GameObject, script: ScriptRef, key: str | None) -> tuple[str, ...]:
+    """What a new MonoBehaviour's fileID derives from (an instance's ``id`` included)."""
+    parts = ("MonoBehaviour", target.path, script.guid, str(script.file_id))
+    return (*parts, key) if key is not None else parts
 
 
 def set_fields(docs: Documents, doc: Doc, fields: Sequence[tuple[str, FieldValue]]) -> bool:

@@ -14,12 +14,13 @@ from typing import cast
 
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import write_chunks_if_changed
-from unityscaffold.unity import _edits
+from unityscaffold.unity import _declared, _edits
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._split import Doc, split_text
 from unityscaffold.unity._validate import validate_docs
+from unityscaffold.unity.builtins import BuiltinClass
 from unityscaffold.unity.index import GameObject, Hierarchy, SceneComponent
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.values import MONOSCRIPT_FILE_ID, FieldValue, ScriptRef
@@ -218,10 +219,11 @@ class SceneDocument:
 
     # ----- edits (found here, carried out by _edits) --------------------------------------------
 
-    def ensure_gameobject(self, path: str, create: bool = True) -> GameObject:
+    def ensure_gameobject(self, path: str, create: bool = True, ui: bool = False) -> GameObject:
         """The GameObject at ``path``; missing levels are created (with a Transform) if asked.
 
-        Without ``create`` a missing level raises ``GameObjectNotFound``.
+        Without ``create`` a missing level raises ``GameObjectNotFound``. With ``ui`` a created
+        last level gets a RectTransform (and the UI layer).
         """
         found, missing_at = self._search(path)
         if missing_at is None:
@@ -232,22 +234,61 @@ class SceneDocument:
         parent = None
         if missing_at > 0:
             parent = self._view(self._unique("/".join(names[:missing_at]), found))
-        return self._view(_edits.create_path(self._docs, parent, names, missing_at))
+        return self._view(_edits.create_path(self._docs, parent, names, missing_at, ui))
 
     def ensure_component(
-        self, go: GameObject | str, script: ScriptRef, fields: Fields = ()
+        self,
+        go: GameObject | str,
+        script: ScriptRef,
+        fields: Fields = (),
+        key: str | None = None,
+        adopt: SceneComponent | None = None,
     ) -> SceneComponent:
         """Attach ``script`` to ``go`` or update the one already there; idempotent.
 
         ``fields`` are written in the given order on a new component; on an existing one,
         values that already match keep their bytes and missing fields are inserted following
-        that order (which should be the script's declaration order).
+        that order (which should be the script's declaration order). With ``key`` the instance
+        is the one made for that key (see :meth:`keyed_component`), else ``adopt`` if given.
         """
         items = _field_list(fields)
         target = self._go(go)
-        existing = self.find_component(target, script.guid, script.file_id)
-        file_id = _edits.ensure_component(self._docs, target, existing, script, items)
+        if key is None:
+            existing = self.find_component(target, script.guid, script.file_id)
+        else:
+            existing = self.keyed_component(target, script, key) or adopt
+        file_id = _edits.ensure_component(self._docs, target, existing, script, items, key)
         return self.component(file_id)
+
+    def keyed_component(
+        self, go: GameObject | str, script: ScriptRef, key: str
+    ) -> SceneComponent | None:
+        """The instance of ``script`` on ``go`` that was attached for ``key``, or None."""
+        found = _declared.find_keyed_component(self._docs, self._go(go), script, key)
+        return self.component(found) if found is not None else None
+
+    def instances(self, go: GameObject | str, script: ScriptRef) -> list[SceneComponent]:
+        """Every component of ``go`` running ``script``, in ``m_Component`` order."""
+        return [
+            c
+            for c in self.components_of(go)
+            if c.script is not None
+            and (c.script.guid, c.script.file_id) == (script.guid, script.file_id)
+        ]
+
+    def ensure_builtin(
+        self, go: GameObject | str, builtin: BuiltinClass, key: str | None, fields: Fields = ()
+    ) -> SceneComponent:
+        """Add the built-in component (``key``'s one) to ``go`` or set fields on it; idempotent."""
+        items = _field_list(fields)
+        file_id = _declared.ensure_builtin(self._docs, self._go(go), builtin, key, items)
+        return self.component(file_id)
+
+    def find_builtin(
+        self, go: GameObject | str, builtin: BuiltinClass, key: str | None = None
+    ) -> SceneComponent | None:
+        found = _declared.find_builtin(self._docs, self._go(go), builtin, key)
+        return self.component(found) if found is not None else None
 
     def set_fields(self, component: SceneComponent | int, fields: Fields) -> bool:
         """Set top-level fields of a component; return whether the text changed."""

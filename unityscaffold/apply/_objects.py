@@ -1,0 +1,198 @@
+"""The manifest's ``objects`` in one scene: created if missing, then kept as declared.
+
+Objects go first (parents before children), so that every other entry, and every ``@Path`` a
+field refers to, finds them. Only what an entry writes is enforced; the rest stays as the scene
+has it. Built-in components' reference fields are set in a second pass, once every declared
+object exists.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from unityscaffold.apply._typed import Resolver, check_names, typed_value
+from unityscaffold.errors import LocatedError, UserError, located_at
+from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
+from unityscaffold.unity import FieldValue, GameObject, InlineMap, SceneDocument
+from unityscaffold.unity.builtins import BUILTIN_TAGS, builtin_class
+from unityscaffold.unity.rotation import euler_to_quaternion
+
+__all__ = ["Hooks", "declare_objects", "project_tags"]
+
+_RECT_TRANSFORM = 224
+_TAGS_RE = re.compile(r"^  tags:\n((?:  - .*\n)*)", re.M)
+
+
+def _vector(keys: str, values: tuple[float, ...]) -> InlineMap:
+    return InlineMap(tuple(zip(keys, values, strict=True)))
+
+
+def _same_rotation(stored: object, wanted: tuple[float, ...]) -> bool:
+    """Whether the scene's quaternion is ``wanted`` up to float32 rounding (and the sign of a
+    zero): Unity's Inspector computes it in single precision, so the last digit may differ."""
+    if not isinstance(stored, dict) or list(stored) != ["x", "y", "z", "w"]:
+        return False
+    try:
+        values = [float(stored[k]) for k in "xyzw"]
+    except (TypeError, ValueError):
+        return False
+    return all(abs(a - b) <= 1e-6 for a, b in zip(values, wanted, strict=True))
+
+
+def _transform_fields(item: SceneObject, stored_rotation: object) -> list[tuple[str, FieldValue]]:
+    fields: list[tuple[str, FieldValue]] = []
+    if item.rotation is not None:
+        quaternion = euler_to_quaternion(*item.rotation)
+        if not _same_rotation(stored_rotation, quaternion):
+            fields.append(("m_LocalRotation", _vector("xyzw", quaternion)))
+    if item.position is not None:
+        fields.append(("m_LocalPosition", _vector("xyz", item.position)))
+    if item.scale is not None:
+        fields.append(("m_LocalScale", _vector("xyz", item.scale)))
+    if item.rotation is not None:  # what the Inspector shows, as Unity keeps it
+        fields.append(("m_LocalEulerAnglesHint", _vector("xyz", item.rotation)))
+    if item.ui is not None:
+        fields += _rect_fields(item.ui)
+    return fields
+
+
+def _rect_fields(ui: RectLayout) -> list[tuple[str, FieldValue]]:
+    named = (
+        ("m_AnchorMin", ui.anchor_min),
+        ("m_AnchorMax", ui.anchor_max),
+        ("m_AnchoredPosition", ui.position),
+        ("m_SizeDelta", ui.size),
+        ("m_Pivot", ui.pivot),
+    )
+    return [(name, _vector("xy", value)) for name, value in named if value is not None]
+
+
+def _gameobject_fields(item: SceneObject) -> list[tuple[str, FieldValue]]:
+    fields: list[tuple[str, FieldValue]] = []
+    if item.layer is not None:
+        fields.append(("m_Layer", item.layer))
+    if item.tag is not None:
+        fields.append(("m_TagString", item.tag))
+    if item.active is not None:
+        fields.append(("m_IsActive", item.active))
+    return fields
+
+
+def project_tags(project_root: Path) -> tuple[str, ...]:
+    """The built-in tags and the ones ``ProjectSettings/TagManager.asset`` adds."""
+    path = project_root / "ProjectSettings" / "TagManager.asset"
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError:
+        return BUILTIN_TAGS
+    match = _TAGS_RE.search(text)
+    added = [line[4:].strip() for line in match.group(1).splitlines()] if match else []
+    return (*BUILTIN_TAGS, *added)
+
+
+def _check_tag(item: SceneObject, tags: tuple[str, ...]) -> None:
+    if item.tag is None or item.tag in tags:
+        return
+    raise LocatedError.at(
+        item.locations.of("tag"),
+        f"unknown tag '{item.tag}'",
+        expected=", ".join(tags),
+        hint="add the tag in Unity (Edit > Project Settings > Tags and Layers), which writes "
+        "ProjectSettings/TagManager.asset",
+    )
+
+
+def _place(doc: SceneDocument, item: SceneObject, path: str) -> tuple[GameObject, bool]:
+    """The object's GameObject (at ``path``, where it is now), created if missing; whether it
+    was."""
+    existed = True
+    try:
+        doc.find_gameobject(path)
+    except UserError:
+        existed = False
+    go = doc.ensure_gameobject(path, create=True, ui=item.ui is not None)
+    transform = doc.document(go.transform_id or 0)
+    if item.ui is not None and transform is not None and transform.class_id != _RECT_TRANSFORM:
+        raise UserError(
+            f"'{item.path}' exists with a Transform, and `ui` asks for a RectTransform",
+            hint="add a UI component to it in Unity (which swaps the Transform), or drop `ui`",
+        )
+    return go, not existed
+
+
+def _builtin_values(
+    comp: BuiltinComponent, references: bool, resolve: Resolver
+) -> list[tuple[str, FieldValue]]:
+    builtin = builtin_class(comp.type)
+    assert builtin is not None  # the manifest accepts only supported classes
+    check_names(builtin.name, builtin.fields, comp.fields)
+    values = []
+    for item in comp.fields:
+        kind = builtin.kind(item.name) or ""
+        if kind.startswith("ref:") != references:
+            continue
+        values.append(
+            (item.name, typed_value(kind, item.value, item.location, item.name, {}, resolve))
+        )
+    return values
+
+
+@dataclass(frozen=True, slots=True)
+class Hooks:
+    """What the scene editor lends: where a named object is now (renames followed), a record of
+    the objects used (for the lock's identities), and the reference resolver."""
+
+    now: Callable[[str], str]
+    record: Callable[[GameObject], None]
+    resolve: Resolver
+
+
+def declare_objects(
+    doc: SceneDocument,
+    objects: list[SceneObject],
+    project_root: Path,
+    edits: list[str],
+    hooks: Hooks,
+) -> None:
+    """Create and update the scene's declared objects, saying what changed in ``edits``."""
+    tags = project_tags(project_root)
+    ordered = sorted(objects, key=lambda o: o.path.count("/"))
+    for item in ordered:
+        _check_tag(item, tags)
+        with located_at(item.locations.of("path")):
+            go, created = _place(doc, item, hooks.now(item.path))
+            hooks.record(go)
+            if created:
+                edits.append(f"create {'UI object' if item.ui else 'object'} {item.path}")
+            revision = doc.revision
+            doc.set_fields(go.file_id, _gameobject_fields(item))
+            if go.transform_id is not None:
+                stored = doc.field(go.transform_id, "m_LocalRotation")
+                doc.set_fields(go.transform_id, _transform_fields(item, stored))
+            updated = doc.revision != revision
+        for comp in item.components:
+            builtin = builtin_class(comp.type)
+            assert builtin is not None
+            existed = doc.find_builtin(go, builtin, comp.key) is not None
+            with located_at(comp.location):
+                values = _builtin_values(comp, False, hooks.resolve)
+                doc.ensure_builtin(go, builtin, comp.key, values)
+            if not existed:
+                edits.append(f"add {comp.type} to {item.path}")
+        if updated and not created:
+            edits.append(f"update object {item.path}")
+    for item in ordered:
+        for comp in item.components:
+            builtin = builtin_class(comp.type)
+            assert builtin is not None
+            with located_at(comp.location):
+                values = _builtin_values(comp, True, hooks.resolve)
+                if values:
+                    before = doc.revision
+                    doc.ensure_builtin(hooks.now(item.path), builtin, comp.key, values)
+                    added = f"add {comp.type} to {item.path}"
+                    if doc.revision != before and added not in edits:
+                        edits.append(f"update {comp.type} on {item.path}")
