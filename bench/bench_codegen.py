@@ -14,6 +14,10 @@ sides run in the same interpreter. genpy gets a fresh ``MsgContext`` per package
 runs it); our side a fresh ``Registry`` per round. Both keep what is compiled once per
 process: genpy its imported modules, we the jinja2 environment.
 
+Wall time includes what the file system costs to create files (on some virtual disks far more
+than generating them; run with TMPDIR on a tmpfs to compare the generators alone); CPU time is
+the fairer figure on a shared machine.
+
     python3 bench/bench_codegen.py [--repeat N] [--rounds N]
 """
 
@@ -119,29 +123,36 @@ def side_by_side(rounds: int) -> None:
         "unityscaffold": _our_round,
     }
     times: dict[str, list[float]] = {name: [] for name in sides}
+    cpu: dict[str, list[float]] = {name: [] for name in sides}
     written: dict[str, int] = {}
     with tempfile.TemporaryDirectory() as tmp:
         for index in range(rounds + 1):  # round 0 warms imports and templates; not counted
             order = list(sides) if index % 2 else list(reversed(sides))
             for name in order:
                 out = Path(tmp) / f"{name}{index}"
-                start = time.perf_counter()
+                start, start_cpu = time.perf_counter(), time.process_time()
                 written[name] = sides[name](out)
                 elapsed = time.perf_counter() - start
                 if index:
                     times[name].append(elapsed)
+                    cpu[name].append(time.process_time() - start_cpu)
                 shutil.rmtree(out)
     median = {name: statistics.median(values) for name, values in times.items()}
+    median_cpu = {name: statistics.median(values) for name, values in cpu.items()}
     print(
         f"side by side on the {types} msg/srv types under {DEBIAN_SHARE}, parse to files "
         f"written, median of {rounds} alternated rounds (genpy: {Path(gen.__file__).parent}):"
     )
     for name in sides:
         print(
-            f"  {name:<14} {median[name] * 1000:6.1f} ms "
-            f"({median[name] / types * 1000:.2f} ms/type, {written[name]} files written)"
+            f"  {name:<14} {median[name] * 1000:6.1f} ms wall, {median_cpu[name] * 1000:6.1f} ms "
+            f"CPU ({median[name] / types * 1000:.2f} ms/type, {written[name]} files written)"
         )
-    print(f"  unityscaffold is {median['genpy'] / median['unityscaffold']:.2f}x genpy's speed")
+    print(
+        f"  unityscaffold is {median['genpy'] / median['unityscaffold']:.2f}x genpy's speed "
+        f"(CPU: {median_cpu['genpy'] / median_cpu['unityscaffold']:.2f}x; "
+        "load average " + " ".join(f"{x:.2f}" for x in os.getloadavg()) + ")"
+    )
 
 
 def main() -> None:

@@ -162,7 +162,8 @@ def plan_files(desired: Iterable[DesiredFile]) -> list[FileChange]:
         if other.content != want.content:
             raise UserError(f"two different contents planned for {want.path}")
     seen: dict[Path, Path | None] = {}
-    return [_change(by_path[path], seen) for path in sorted(by_path)]
+    # sorted as Paths sort, by their parts, without Path's slower comparison methods
+    return [_change(by_path[path], seen) for path in sorted(by_path, key=lambda p: p.parts)]
 
 
 # ----- writing: temporary files first, renamed into place at the end -----------------------------
