@@ -1,0 +1,126 @@
+"""``discover --rosbridge`` against the real rosbridge and its rosapi (ROS 1), with a rospy node
+that publishes, subscribes to and serves standard types and the sample's custom ones
+(data/discover_node.py). What the real server cannot do (malformed replies, a drop mid-call,
+silence) stays with the fake in tests/live/test_rosbridge_discovery.py."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+from csharp import compile_applied_project
+from helpers import SYSTEM_PYTHON, run_cli
+
+from tests.runtime.bridge import DATA, Bridge
+from unityscaffold.interfaces.identity_ros1 import Ros1Identity
+from unityscaffold.interfaces.live import Direction, NameFilter, discover, list_live_types
+from unityscaffold.interfaces.live.definitions import stage_definitions
+from unityscaffold.interfaces.model import Dialect, ServiceSpec
+from unityscaffold.interfaces.registry import Registry
+
+OURS = "^/(chatter|odom|base_status|dock/feedback|cmd_vel|trigger|set_speed_limit)$"
+
+
+@pytest.fixture(scope="module")
+def truth(bridge: Bridge) -> Iterator[dict[str, Any]]:
+    """The node's genpy md5sums and full texts, while it runs."""
+    node = subprocess.Popen(
+        [str(SYSTEM_PYTHON), str(DATA / "discover_node.py")],
+        env=bridge.env,
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert node.stdout
+        yield json.loads(node.stdout.readline())
+    finally:
+        node.communicate(input="", timeout=30)
+
+
+def test_topics_types_directions_definitions_and_services(
+    bridge: Bridge, truth: dict[str, Any]
+) -> None:
+    found = discover(rosbridge_url=bridge.url, timeout=5, names=NameFilter.of(select=OURS))
+    assert found.dialect is Dialect.ROS1
+    assert found.warnings == ()
+    topics = {t.name: (t.type, t.direction) for t in found.topics}
+    assert topics == {
+        "/chatter": ("std_msgs/String", Direction.SUBSCRIBE),
+        "/odom": ("nav_msgs/Odometry", Direction.SUBSCRIBE),
+        "/base_status": ("diffbot_msgs/BaseStatus", Direction.SUBSCRIBE),
+        "/dock/feedback": ("diffbot_msgs/DockActionFeedback", Direction.SUBSCRIBE),
+        "/cmd_vel": ("geometry_msgs/Twist", Direction.PUBLISH),
+    }
+    # rosapi's full texts are genpy's, byte for byte.
+    for topic in found.topics:
+        assert topic.definition == truth[topic.type]["definition"], topic.name
+    assert [(s.name, s.type) for s in found.services] == [
+        ("/set_speed_limit", "diffbot_msgs/SetSpeedLimit"),
+        ("/trigger", "std_srvs/Trigger"),
+    ]
+    # Unfiltered: rosbridge's and rosapi's own topics and services are left out by default.
+    everything = discover(rosbridge_url=bridge.url, timeout=5)
+    assert set(topics) <= {t.name for t in everything.topics}
+    assert not [s.name for s in everything.services if s.name.startswith("/rosapi")]
+    assert ("/base_status", "diffbot_msgs/BaseStatus") in list_live_types(bridge.url, timeout=5)
+
+
+def test_staged_definitions_reproduce_genpy_md5sums(
+    bridge: Bridge, truth: dict[str, Any], tmp_path: Path
+) -> None:
+    found = discover(rosbridge_url=bridge.url, timeout=5, names=NameFilter.of(select=OURS))
+    stage_definitions(found, tmp_path / "cache").commit()
+    alone = Registry.load(
+        Dialect.ROS1, [tmp_path / "cache"], use_environment=False, use_builtin=False
+    )
+    identity = Ros1Identity(alone)
+    for topic in found.topics:
+        spec = alone.message(topic.type)
+        assert identity.md5sum(spec) == truth[topic.type]["md5sum"], topic.type
+        assert identity.full_text(spec) == truth[topic.type]["definition"], topic.type
+    # Services: ROS 1 never sends a .srv text; their types resolve from the sources we read
+    # (the sample's workspace, Debian's share) with the md5sum rospy serves them under.
+    sample = Path(__file__).resolve().parents[2] / "sample_project" / "ros_ws" / "src"
+    local = Registry.load(Dialect.ROS1, [sample], use_builtin=False)
+    for service in found.services:
+        spec = local.get(service.type)
+        assert isinstance(spec, ServiceSpec)
+        assert Ros1Identity(local).md5sum(spec) == truth[service.type]["md5sum"], service.type
+
+
+def test_discover_then_apply_without_the_workspace(
+    bridge: Bridge, truth: dict[str, Any], mcs: str, tmp_path: Path
+) -> None:
+    project = tmp_path / "robot_unity"
+    assert run_cli("init", str(project), "--ros", "1").code == 0
+    manifest = project / "robot.yaml"
+    found = run_cli(
+        "discover",
+        str(manifest),
+        "--rosbridge",
+        bridge.url,
+        "--timeout",
+        "5",
+        "--select",
+        OURS,
+        "--exclude",
+        "set_speed_limit",  # its .srv text never crosses ROS 1, and no workspace is given
+        "--progress",
+    )
+    assert found.code == 0, found.err
+    assert "probing 6/6" in found.err
+    text = manifest.read_text()
+    assert "- {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish" in text
+    assert "- {name: /base_status, type: diffbot_msgs/BaseStatus, direction: subscribe" in text
+    applied = run_cli("apply", str(manifest), "--json")
+    assert applied.code == 0, applied.err
+    files = {entry["path"] for entry in json.loads(applied.out)["files"]}
+    assert "Assets/RosGenerated/Messages/Diffbot/msg/BaseStatus.cs" in files
+    assert "Assets/RosGenerated/Scripts/BaseStatusSubscriber.cs" in files
+    assert "Assets/RosGenerated/Scripts/TriggerClient.cs" in files
+    compile_applied_project(mcs, manifest, tmp_path / "build", ros2=False)
