@@ -11,11 +11,30 @@ import sys
 import threading
 import time
 
+import rosgraph
 import rospy
 from diffbot_msgs.msg import BaseStatus
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
+
+
+def registered(published, subscribed, timeout=30):
+    """Wait until the master lists this node's topics: rospy registers them from a background
+    thread, and a /cmd_vel published before our subscription is known would be lost."""
+    master = rosgraph.Master(rospy.get_name())
+    me = rospy.get_name()
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        publishers, subscribers, _ = master.getSystemState()
+        mine = (
+            {t for t, nodes in publishers if me in nodes},
+            {t for t, nodes in subscribers if me in nodes},
+        )
+        if set(published) <= mine[0] and set(subscribed) <= mine[1]:
+            return
+        time.sleep(0.05)
+    raise SystemExit(f"the master never listed {published} and {subscribed} for {me}")
 
 
 def main(result_path):
@@ -39,6 +58,7 @@ def main(result_path):
                 status.publish(message)
             time.sleep(0.02)
 
+    registered(["/odom", "/base_status", "/scan"], ["/cmd_vel"])
     thread = threading.Thread(target=publish)
     thread.start()
     print("ready", flush=True)
