@@ -308,3 +308,21 @@ def test_a_tag_the_project_added_is_accepted(project):
                         "  tags:\n  - Robot\n  layers:\n  - Default\n")  # fmt: skip
     run = _apply(project, "objects:\n  - {path: Thing, tag: Robot}\n")
     assert run.code == 0, run.err
+
+
+def test_an_instance_whose_id_leaves_the_manifest_is_removed_alone(project):
+    both = """\
+components:
+  - {script: JoyAxisReader, gameobject: Pad, id: x, fields: {name: Horizontal}}
+  - {script: JoyAxisReader, gameobject: Pad, id: y, fields: {name: Vertical}}
+"""
+    first = _apply(project, both)
+    assert first.code == 0, first.err
+    assert "re-add" not in first.out
+    run = _apply(project, both.replace(both.splitlines()[2] + "\n", ""))
+    assert run.code == 0, run.err
+    assert "remove component JoyAxisReader#y from Pad" in run.out
+    scene = _scene(project)
+    readers = [c for c in scene.components_of("Pad") if c.script and c.script.guid == JOY]
+    assert [scene.field(c, "name") for c in readers] == ["Horizontal"]
+    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0

@@ -95,6 +95,7 @@ class _SceneEditor:
         self.attached: set[int] = set()  # fileIDs of the components the manifest asks for
         self.keys: dict[tuple[str, str, int], list[str]] = {}  # (path, GUID, fileID) -> ids
         self.adopted: dict[tuple[str, str, int, str], int] = {}  # ... + id -> instance taken
+        self.entries: set[tuple[str, str]] = set()  # (path, lock entry) an earlier apply made
 
     def path(self, named: str) -> str:
         """Where the GameObject the manifest calls ``named`` is (renames followed)."""
@@ -170,7 +171,9 @@ class _SceneEditor:
             self.adopted[(path, script.guid, script.file_id, key)] = adopt.file_id
         name = (script.class_name or script.guid) + (f"#{key}" if key else "")
         added = f"add {name} to {path}"
-        if not existed and (path, script.guid) in self.owned:
+        # an instance with an id was there before only if the lock has that very entry
+        before = (path, entry) in self.entries if key else (path, script.guid) in self.owned
+        if not existed and before:
             readded = f"re-add {name} to {path} (removed in Unity since the last apply)"
             if readded not in self.plan.edits:
                 self.plan.edits.append(readded)
@@ -195,7 +198,11 @@ class _SceneEditor:
             component = self._recorded(old)
             if component is None or component.file_id in self.attached:
                 continue
-            if (self.doc.hierarchy.paths.get(component.gameobject_id), old.script) in keep:
+            keyed = "#" in old.entry  # one of several instances: its fileID alone tells
+            if (
+                not keyed
+                and (self.doc.hierarchy.paths.get(component.gameobject_id), old.script) in keep
+            ):
                 continue
             if self.doc.remove_component(component):
                 self.plan.edits.append(f"remove {old.entry or old.script} from {old.gameobject}")
@@ -509,6 +516,11 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
         if c.scene == plan.relative
     }
     editor = _SceneEditor(plan, doc, owned, now)
+    editor.entries = {
+        (now_at(c.gameobject, moves) or c.gameobject, c.entry)
+        for c in lock.components
+        if c.scene == plan.relative
+    }
     connector_id = 0
     connector_script = None
     scripts = {id(c): _component_script(ctx, c) for c in m.components if c.scene == plan.relative}
