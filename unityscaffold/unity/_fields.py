@@ -107,12 +107,18 @@ def scalar_value(doc: Doc, key: str) -> str | None:
 
 def ref_value(doc: Doc, key: str) -> int | None:
     """The fileID of a ``key: {fileID: N}`` (or ``{fileID: N, guid: …}``) field."""
+    # cached: the hierarchy and validation read the same links of every document
+    name = "ref " + key
+    if name in doc.cache:
+        return doc.cache[name]  # type: ignore[return-value]
     text = doc.text
     at = _key_line(text, key)
-    if at < 0 or not text.startswith(" {fileID: ", at):
-        return None
-    match = _INT_AT.match(text, at + 10)
-    return int(match.group(0)) if match else None
+    found = None
+    if at >= 0 and text.startswith(" {fileID: ", at):
+        match = _INT_AT.match(text, at + 10)
+        found = int(match.group(0)) if match else None
+    doc.cache[name] = found
+    return found
 
 
 def list_refs(doc: Doc, key: str) -> list[int]:

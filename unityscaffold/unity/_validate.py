@@ -81,7 +81,10 @@ def validate_docs(
                 )
             )
         by_id.setdefault(doc.file_id, doc)
-    referenced = {int(m) for doc in docs for m in F.LOCAL_REF_RE.findall(doc.text)}
+    spelled: set[str] = set()  # as written: int() once per distinct fileID, not per reference
+    for doc in docs:
+        spelled.update(F.LOCAL_REF_RE.findall(doc.text))
+    referenced = {int(m) for m in spelled}
     # reading every reference once is cheap; finding where a dangling one sits is not, so only
     # documents are scanned when something is actually missing
     if referenced - by_id.keys() - {0}:
