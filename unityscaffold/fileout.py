@@ -27,6 +27,7 @@ import contextlib
 import enum
 import itertools
 import os
+import re
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -42,6 +43,7 @@ __all__ = [
     "name_too_long",
     "plan_files",
     "same_text",
+    "temp_leftovers",
     "write_chunks_if_changed",
     "write_files",
     "write_if_changed",
@@ -184,6 +186,47 @@ def _make_folders(folder: Path, created: list[Path], ready: set[Path]) -> None:
     ready.update((folder, *missing))
 
 
+# A temporary file is ``.<target name>.<pid>-<n>.tmp`` beside its target: hidden (Unity does
+# not import dot files) and named after the process that made it.
+_TEMP_RE = re.compile(r"^\..+\.(\d+)-\d+\.tmp$")
+
+
+def _temp_name(path: Path, attempt: int) -> Path:
+    return path.with_name(f".{path.name}.{os.getpid()}-{attempt}.tmp")
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True  # exists, owned by someone else
+    return True
+
+
+def temp_leftovers(folders: Iterable[Path]) -> list[Path]:
+    """Temporary files in ``folders`` that a killed writer left behind, sorted.
+
+    A write that fails removes its temporary files; one killed (SIGKILL, power loss) cannot.
+    Files of a process still running are left alone: they may be another apply's, about to be
+    renamed into place.
+    """
+    found = []
+    for folder in set(folders):
+        try:
+            entries = list(os.scandir(folder))
+        except OSError:
+            continue
+        for entry in entries:
+            match = _TEMP_RE.match(entry.name)
+            if match and entry.is_file(follow_symlinks=False) and not _alive(int(match[1])):
+                found.append(Path(entry.path))
+    return sorted(found)
+
+
 def _write_temp(change: FileChange, durable: bool, chunks: Chunks | None = None) -> Path:
     """``change``'s content (or ``chunks()``) in a new temporary file beside its target, with
     the target's permission bits (what the umask allows for a new file); removed again if this
@@ -191,7 +234,7 @@ def _write_temp(change: FileChange, durable: bool, chunks: Chunks | None = None)
     path = change.path
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
     for attempt in itertools.count():
-        temp = path.with_name(f".{path.name}.{os.getpid()}-{attempt}.tmp")
+        temp = _temp_name(path, attempt)
         try:
             # 0o666 less the umask, as open() gives a new file
             handle = os.open(temp, flags, 0o666)
@@ -258,12 +301,26 @@ def _replace_all(temps: Sequence[tuple[Path, Path]]) -> None:
             ) from None
 
 
-def write_files(changes: Sequence[FileChange], *, durable: bool = False) -> list[Path]:
+def write_files(
+    changes: Sequence[FileChange],
+    *,
+    durable: bool = False,
+    before_replace: Callable[[], object] | None = None,
+) -> list[Path]:
     """Write the ``create``/``update`` changes all at once; returns the paths written.
 
-    ``durable`` flushes each file to disk before it replaces its target.
+    ``durable`` flushes each file to disk before it replaces its target. ``before_replace``
+    runs once every temporary file is written, just before the first one replaces its target
+    (``apply`` records there what it is about to do, for a run that is killed half-way).
     """
     temps = _stage([c for c in changes if c.writes], durable)
+    if before_replace is not None:
+        try:
+            before_replace()
+        except BaseException:
+            for temp, _ in temps:
+                temp.unlink(missing_ok=True)
+            raise
     _replace_all(temps)
     return [path for _, path in temps]
 

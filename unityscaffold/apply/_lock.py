@@ -26,6 +26,7 @@ __all__ = [
     "LockComponent",
     "LockFile",
     "LockGameObject",
+    "journal_path",
     "lock_path",
     "recorded",
     "sha256",
@@ -49,6 +50,15 @@ def recorded(data: bytes, digest: str | None) -> bool:
 def lock_path(manifest: Path) -> Path:
     """``robot.yaml`` -> ``robot.lock.json`` beside it."""
     return manifest.with_name(f"{manifest.stem}.lock.json")
+
+
+def journal_path(manifest: Path) -> Path:
+    """``robot.yaml`` -> ``robot.lock.pending.json``: the lock an apply is about to make true.
+
+    It is written before the first file is replaced and removed after the lock; one left behind
+    means that apply was interrupted, and the next run reads both (``LockFile.recovered``).
+    """
+    return manifest.with_name(f"{manifest.stem}.lock.pending.json")
 
 
 @dataclass(frozen=True, slots=True, order=True)
@@ -221,6 +231,40 @@ class LockFile:
             f"{path} is not a valid unityscaffold lock file: {detail}",
             hint="restore it from git, or delete it and run apply again to rebuild it "
             "(generated files that differ from the new output then count as hand edits)",
+        )
+
+    def recovered(self, journal: LockFile, root: Path) -> LockFile:
+        """What is on disk after an apply that wrote ``journal`` was interrupted, somewhere
+        between its first replaced file and its lock: every file and object either lock knows.
+
+        A file known to both keeps the digest its content matches (the journal's when neither
+        does: then it was edited by hand either way); components and GameObjects are the union,
+        so the next run prunes what the interrupted one added and the manifest no longer wants.
+        """
+
+        def merge(old: dict[str, str], new: dict[str, str]) -> dict[str, str]:
+            merged = {**old, **new}
+            for relative in old.keys() & new.keys():
+                if old[relative] != new[relative]:
+                    try:
+                        data = (root / relative).read_bytes()
+                    except OSError:
+                        continue
+                    if recorded(data, old[relative]):
+                        merged[relative] = old[relative]
+            return merged
+
+        newer = {(g.scene, g.path) for g in journal.gameobjects}
+        return LockFile(
+            merge(self.files, journal.files),
+            merge(self.user_files, journal.user_files),
+            tuple(sorted(set(self.components) | set(journal.components))),
+            tuple(
+                sorted(
+                    {*journal.gameobjects}
+                    | {g for g in self.gameobjects if (g.scene, g.path) not in newer}
+                )
+            ),
         )
 
     def render(self) -> str:

@@ -12,7 +12,15 @@ from pathlib import Path
 from unityscaffold.apply._code import CodePlan, plan_code
 from unityscaffold.apply._identity import follow_in_manifest
 from unityscaffold.apply._inside import check_inside
-from unityscaffold.apply._lock import LockFile, LockGameObject, lock_path, recorded, sha256
+from unityscaffold.apply._leftovers import plan_leftovers, temp_leftovers_of
+from unityscaffold.apply._lock import (
+    LockFile,
+    LockGameObject,
+    journal_path,
+    lock_path,
+    recorded,
+    sha256,
+)
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
@@ -46,6 +54,9 @@ class Plan:
     conflicts: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     skipped_types: int = 0
+    #: The lock as recovered from an interrupted run's journal, to be made the lock before a
+    #: new journal replaces that one (None when no run was interrupted).
+    recovered_lock: bytes | None = None
 
     @property
     def writes(self) -> list[FileChange]:
@@ -119,6 +130,11 @@ def make_plan(
             hint="set `project:` in the manifest, or create one with scaffold init",
         )
     lock = LockFile.read(lock_path(manifest.path))
+    journal = journal_path(manifest.path)
+    recovered = None
+    if journal.exists():  # an apply was interrupted: what it may have done counts as done
+        lock = lock.recovered(LockFile.read(journal), project)
+        recovered = lock.render().encode("utf-8")
     salt = project_salt(project)
     metas = plan_script_metas(manifest, script_index(project), salt)
     scripts = metas.scripts
@@ -137,6 +153,9 @@ def make_plan(
 
     pruning = plan_pruning(manifest, lock, {manifest.asset_path(d.path) for d in desired})
     deletions = pruning.deletions
+    # Temporary files may sit beside any file apply writes: scenes, settings, generated files.
+    beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
+    deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside)
     notes = [*rossharp.notes, *user.notes, *pruning.notes]
     new_lock = LockFile(
         files={
@@ -152,6 +171,11 @@ def make_plan(
         ),
     )
     check_inside(project, [d.path for d in desired] + deletions)
+    # Beside the manifest, outside the project: the lock's and the journal's temporary files,
+    # then the journal itself, removed last (apply.run).
+    deletions += temp_leftovers_of([lock_path(manifest.path), journal])
+    if journal.exists():
+        deletions.append(journal)
     desired += _followed_manifest(manifest, scenes)
     desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
     changes = plan_files(desired)
@@ -163,4 +187,5 @@ def make_plan(
         conflicts,
         notes,
         skipped_types=len(code.messages.skipped),
+        recovered_lock=recovered,
     )

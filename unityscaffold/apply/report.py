@@ -56,6 +56,8 @@ def plan_diff(plan: Plan) -> str:
         before = _text(change.path.read_bytes())
         parts += difflib.unified_diff(before, _text(change.content), f"a/{name}", f"b/{name}")
     for path in plan.deletions:
+        if path.is_dir():
+            continue  # an empty folder: nothing to show
         name = plan.relative(path)
         parts += difflib.unified_diff(_text(path.read_bytes()), [], f"a/{name}", "/dev/null")
     return "".join(parts)

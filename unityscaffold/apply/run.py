@@ -6,10 +6,10 @@ import enum
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply._lock import lock_path
+from unityscaffold.apply._lock import journal_path, lock_path
 from unityscaffold.apply.plan import Plan, make_plan
 from unityscaffold.errors import LocatedError, UserError
-from unityscaffold.fileout import write_files
+from unityscaffold.fileout import write_files, write_if_changed
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest import load_manifest
 from unityscaffold.manifest.model import Manifest
@@ -73,18 +73,46 @@ def run(
             hint="move your code into the matching .User.cs file (it is never rewritten), "
             "or run apply --force to overwrite these files",
         )
-    # The lock is written last: if a deletion fails, the old lock still lists the file and the
-    # next run tries again instead of forgetting it.
+    # Order matters for a run that is interrupted (Ctrl-C, SIGKILL): the journal (the new
+    # lock) is on disk before the first file is replaced, the lock is written after the last
+    # deletion, and the journal is removed after the lock. The next run reads the journal if
+    # it is still there (make_plan), so the lock never forgets a file or a component.
     lock = lock_path(plan.manifest.path)
-    outcome.written = write_files([c for c in plan.changes if c.path != lock])
-    for path in plan.deletions:
-        try:
-            path.unlink(missing_ok=True)
-        except OSError as exc:
-            raise UserError(
-                f"cannot remove {path}: {exc.strerror}; the other changes were written",
-                hint="fix the cause and run apply again to finish the clean-up",
-            ) from None
+    journal = journal_path(plan.manifest.path)
+    lock_changes = [c for c in plan.changes if c.path == lock]
+    work = [c for c in plan.changes if c.path != lock]
+    removals = [p for p in plan.deletions if p != journal]
+
+    def record() -> None:
+        if any(c.writes for c in work) or removals:
+            if plan.recovered_lock is not None:
+                # an earlier journal is about to be replaced: keep what it knew in the lock
+                write_if_changed(lock, plan.recovered_lock)
+            write_if_changed(journal, lock_changes[0].content)
+
+    outcome.written = write_files(work, before_replace=record)
+    for path in removals:
+        _remove(path)
         outcome.deleted.append(path)
-    outcome.written += write_files([c for c in plan.changes if c.path == lock])
+    # compared again, not as planned: record() may have put the recovered lock there since
+    if write_if_changed(lock, lock_changes[0].content):
+        outcome.written.append(lock)
+    if journal.exists():
+        _remove(journal)
+        if journal in plan.deletions:
+            outcome.deleted.append(journal)
     return outcome
+
+
+def _remove(path: Path) -> None:
+    """Remove a file, or a folder the plan found empty."""
+    try:
+        if path.is_dir() and not path.is_symlink():
+            path.rmdir()
+        else:
+            path.unlink(missing_ok=True)
+    except OSError as exc:
+        raise UserError(
+            f"cannot remove {path}: {exc.strerror}; the other changes were written",
+            hint="fix the cause and run apply again to finish the clean-up",
+        ) from None
