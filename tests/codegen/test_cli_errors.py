@@ -115,3 +115,22 @@ def test_second_run_writes_nothing_and_reports_skipped_types(
     assert "create    " not in second and "update    " not in second
     assert "0 created, 0 updated" in second
     assert stamps == {p: p.stat().st_mtime_ns for p in (tmp_path / "out").rglob("*")}
+
+
+@pytest.mark.parametrize("namespace", [[], ["--namespace", "My.Ros"]])
+def test_a_hyphenated_package_is_refused_with_a_hint_that_works(
+    namespace: list[str], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The hint names the fix (rename the package), not --namespace, which cannot help: the
+    package still names a namespace segment under any root."""
+    (tmp_path / "src/my-pkg/msg").mkdir(parents=True)
+    (tmp_path / "src/my-pkg/msg/Foo.msg").write_text("int32 x\n")
+    out = tmp_path / "out"
+    args = ["--ros", "1", "--no-env", "--path", str(tmp_path / "src"), "--out", str(out)]
+    code = main(["msgs", "gen", *args, *namespace, "my-pkg/Foo"])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert "package 'my-pkg' cannot become a C# namespace" in err
+    assert "rename the package" in err
+    assert "--namespace" not in err
+    assert not out.exists()

@@ -9,6 +9,7 @@ import pytest
 from unityscaffold.errors import LocatedError
 from unityscaffold.interfaces.live import Direction, DiscoveredService, DiscoveredTopic, Discovery
 from unityscaffold.interfaces.model import Dialect
+from unityscaffold.manifest import load_manifest, starter_manifest
 from unityscaffold.manifest.edit import edit_manifest, manifest_fragment
 
 EXAMPLE = """\
@@ -134,3 +135,28 @@ def test_the_fragment_lists_everything_discovered() -> None:
         "  - ros_definitions",
     ]
     assert fragment.count("gameobject: RosConnector") == 5
+
+
+def test_a_list_with_nothing_found_keeps_its_commented_examples_usable(tmp_path) -> None:
+    """init's starter after a discovery that finds topics but no services: 'services:' stays
+    as written, so uncommenting its example gives a valid manifest (not 'services: []')."""
+    starter = starter_manifest(1, "Assets/Scenes/Main.unity")
+    found = Discovery(Dialect.ROS1, "http://127.0.0.1:11311", FOUND.topics[:1], ())
+    edit = edit_manifest(starter, found, cache_entry="ros_definitions")
+    assert edit.added_topics == ("/imu",) and edit.added_services == ()
+    assert "services: []" not in edit.text
+    assert "\nservices:\n#  - {name: /reset" in edit.text
+    uncommented = edit.text.replace("#  - {name: /reset", "  - {name: /reset")
+    path = tmp_path / "robot.yaml"
+    path.write_text(uncommented, encoding="utf-8")
+    manifest = load_manifest(path)
+    assert [s.name for s in manifest.services] == ["/reset"]
+    assert [t.name for t in manifest.topics] == ["/imu"]
+
+
+def test_nothing_found_leaves_the_manifest_as_it_was() -> None:
+    starter = starter_manifest(2, "Assets/Scenes/Main.unity")
+    edit = edit_manifest(
+        starter.replace("ros: 2", "ros: 1"), Discovery(Dialect.ROS1, "x", (), ()), cache_entry="d"
+    )
+    assert "topics: []" not in edit.text and "services: []" not in edit.text

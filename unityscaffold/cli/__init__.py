@@ -37,7 +37,7 @@ def _wanted(argv: list[str]) -> list[str]:
 def build_app(argv: list[str]) -> typer.Typer:
     app = typer.Typer(
         name="scaffold",
-        help="Generate ROS# message classes, ROS components and scene wiring for Unity.",
+        help=_root.__doc__,
         no_args_is_help=True,
         add_completion=True,  # --install-completion / --show-completion for bash, zsh, fish, pwsh
         pretty_exceptions_enable=False,
@@ -63,7 +63,20 @@ def _root(
         False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
     ),
 ) -> None:
-    """Generate ROS# message classes, ROS components and scene wiring for Unity."""
+    """Generate ROS# message classes, ROS components and scene wiring for Unity.
+
+    Examples:
+
+      scaffold init my_robot --ros 2
+
+      scaffold apply my_robot/robot.yaml
+
+      scaffold apply --check        (robot.yaml here or in a folder above)
+
+      scaffold msgs show sensor_msgs/msg/Imu
+
+    Each command's --help has its own examples.
+    """
 
 
 def _usage_errors() -> tuple[type[BaseException], ...]:

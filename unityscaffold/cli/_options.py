@@ -42,3 +42,25 @@ NoEnvOption: bool = typer.Option(
     help="Ignore the ROS environment (ROS_PACKAGE_PATH, AMENT_PREFIX_PATH, /opt/ros, /usr/share): "
     "search only --path folders and the built-in standard definitions.",
 )
+
+
+MANIFEST_NAME = "robot.yaml"
+
+
+def find_manifest(given: Path | None) -> Path:
+    """``given``, or the nearest ``robot.yaml`` from the current folder upward, as git looks for
+    ``.git``: the search ends at the folder holding ``.git`` (a repository's root) or at the
+    file system's root. A manifest found above is returned relative to the current folder
+    (``../robot.yaml``), so messages name it as the user would type it. Nothing found gives
+    ``robot.yaml``, which the command then reports as missing.
+    """
+    if given is not None:
+        return given
+    here = Path.cwd()
+    for folder in (here, *here.parents):
+        candidate = folder / MANIFEST_NAME
+        if candidate.is_file():
+            return Path(MANIFEST_NAME) if folder == here else Path(os.path.relpath(candidate))
+        if (folder / ".git").exists():
+            break
+    return Path(MANIFEST_NAME)

@@ -10,10 +10,15 @@ import typer
 from unityscaffold.apply.init import init_project
 from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
 from unityscaffold.apply.run import Mode, Outcome, run
+from unityscaffold.cli._options import find_manifest
 from unityscaffold.errors import Exit
 
-ManifestArgument: Path = typer.Argument(
-    Path("robot.yaml"), metavar="MANIFEST", help="The manifest (default: robot.yaml)."
+ManifestArgument: Path | None = typer.Argument(
+    None,
+    metavar="[MANIFEST]",
+    help="The manifest. Default: robot.yaml in this folder or the nearest folder above it "
+    "(up to the repository's root).",
+    show_default=False,
 )
 RosEnvOption: bool = typer.Option(
     False,
@@ -59,7 +64,7 @@ def register(app: typer.Typer) -> None:
 
     @app.command("apply")
     def apply_command(
-        manifest: Path = ManifestArgument,
+        given: Path | None = ManifestArgument,
         check: bool = typer.Option(
             False, "--check", help="Write nothing; exit 1 if the project differs from the manifest."
         ),
@@ -89,7 +94,16 @@ def register(app: typer.Typer) -> None:
         your code belongs in the *.User.cs files, which are created once and never rewritten.
         GameObjects are known by identity: one renamed or moved in Unity stops apply with the
         manifest lines to change (see --follow-renames).
+
+        Examples:
+
+          scaffold apply                      (robot.yaml here or above)
+
+          scaffold apply my_robot/robot.yaml
+
+          scaffold apply --check --quiet      (in CI: exit 1 on drift)
         """
+        manifest = find_manifest(given)
         mode = Mode.CHECK if check else Mode.PLAN if dry_run else Mode.APPLY
         outcome = run(
             manifest, mode, force=force, use_environment=ros_env, follow_renames=follow_renames
@@ -105,11 +119,19 @@ def register(app: typer.Typer) -> None:
 
     @app.command("plan")
     def plan_command(
-        manifest: Path = ManifestArgument,
+        given: Path | None = ManifestArgument,
         ros_env: bool = RosEnvOption,
         as_json: bool = JsonOption,
     ) -> None:
-        """Show what apply would change (summary and unified diff); write nothing."""
+        """Show what apply would change (summary and unified diff); write nothing.
+
+        Examples:
+
+          scaffold plan
+
+          scaffold plan my_robot/robot.yaml --json
+        """
+        manifest = find_manifest(given)
         outcome = run(manifest, Mode.PLAN, use_environment=ros_env)
         _show(outcome, quiet=False, as_json=as_json, diff=True)
 
@@ -121,7 +143,14 @@ def register(app: typer.Typer) -> None:
             False, "--force", help="Add the template to a non-empty folder (keeps existing files)."
         ),
     ) -> None:
-        """Create a template Unity project (2022.3, ROS# pinned) with a starter robot.yaml."""
+        """Create a template Unity project (2022.3, ROS# pinned) with a starter robot.yaml.
+
+        Examples:
+
+          scaffold init my_robot
+
+          scaffold init my_robot --ros 1
+        """
         if ros not in (1, 2):
             from unityscaffold.errors import UserError
 

@@ -10,6 +10,7 @@ from typing import Any
 
 import typer
 
+from unityscaffold.cli._options import find_manifest
 from unityscaffold.errors import UserError
 from unityscaffold.fileout import write_if_changed
 from unityscaffold.interfaces import live
@@ -22,7 +23,12 @@ _HELP = (
     "The definitions are written as .msg files to a cache folder next to the manifest (ROS 1 "
     "md5sums checked against the system's), and the topics and services are added to the "
     "manifest, keeping its comments and layout. With --print, a manifest fragment is printed "
-    "instead."
+    "instead. Without MANIFEST, robot.yaml in this folder or the nearest folder above it (up to "
+    "the repository's root) is used.\n\n"
+    "Examples:\n\n"
+    "  scaffold discover --master http://robot:11311\n\n"
+    "  scaffold discover my_robot/robot.yaml --rosbridge ws://robot:9090\n\n"
+    "  scaffold discover --bag run1.mcap --print"
 )
 
 
@@ -32,7 +38,9 @@ def register(app: typer.Typer) -> None:
 
 
 def discover_command(
-    manifest: Path = typer.Argument(Path("robot.yaml"), help="The manifest to add to."),
+    given: Path | None = typer.Argument(
+        None, metavar="[MANIFEST]", help="The manifest to add to.", show_default=False
+    ),
     master: str | None = typer.Option(
         None, "--master", metavar="URL", help="A ROS 1 master, e.g. http://localhost:11311."
     ),
@@ -76,6 +84,7 @@ def discover_command(
 ) -> None:
     if sum(s is not None for s in (master, rosbridge, bag)) != 1:
         raise UserError("give exactly one source: --master URL, --rosbridge URL or --bag FILE")
+    manifest = find_manifest(given)
     text = _manifest_text(manifest, required=not print_fragment)
     cache = cache if cache is not None else manifest.parent / "ros_definitions"
     found = live.discover(

@@ -54,6 +54,12 @@ def list_types(
 
     A malformed file is reported (file:line:col) without hiding the good types; the exit
     status is then 2.
+
+    Examples:
+
+      scaffold msgs list --package sensor_msgs
+
+      scaffold msgs list --ros 1 --path ~/catkin_ws/src --no-env
     """
     if live is not None:
         _list_live(live, timeout, as_json)
@@ -157,6 +163,12 @@ def show(
     """Show types: fields, constants, source file, md5sum (ROS 1) or type hash (ROS 2), definition.
 
     Service halves are accepted as types too: pkg/SrvRequest (ROS 1), pkg/srv/Srv_Request (ROS 2).
+
+    Examples:
+
+      scaffold msgs show geometry_msgs/msg/Twist
+
+      scaffold msgs show nav_msgs/GetMap --ros 1 --json
     """
     registry = Registry.load(dialect_of(ros), path, use_environment=not no_env)
     describer = Describer(registry)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import json
 import os
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -10,7 +11,7 @@ from typing import TYPE_CHECKING
 import typer
 
 from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
-from unityscaffold.errors import Diagnostic, LocatedError, UserError
+from unityscaffold.errors import Diagnostic, Exit, LocatedError, UserError
 from unityscaffold.fileout import ChangeKind, FileChange, plan_files, write_files
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
@@ -79,8 +80,10 @@ def run(
     everything: bool,
     *,
     use_environment: bool = True,
+    write: bool = True,
 ) -> tuple[GeneratedCode, list[FileChange]]:
-    """Generate and write; returns what was generated and each file's change."""
+    """Generate and (unless ``write`` is false) write; returns what was generated and each
+    file's change."""
     from unityscaffold.codegen import Options, generate
     from unityscaffold.codegen.layout import output_files
     from unityscaffold.codegen.naming import ClassClash
@@ -93,24 +96,55 @@ def run(
     except ClassClash as clash:
         raise UserError(clash.message, hint=_CLASH_HINTS[clash.with_shipped]) from None
     changes = plan_files(output_files(code, out))
-    write_files(changes)
+    if write:
+        write_files(changes)
     return code, changes
 
 
-def _report(code: GeneratedCode, changes: list[FileChange], out: Path) -> None:
-    base = out.resolve()
+def _relative(change: FileChange, out: Path) -> str:
+    return Path(os.path.relpath(change.path, out.resolve())).as_posix()
+
+
+def _drifted(changes: list[FileChange]) -> list[FileChange]:
+    """The files that writing would create or change (what ``--check`` fails on)."""
+    return [c for c in changes if c.kind in (ChangeKind.CREATE, ChangeKind.UPDATE)]
+
+
+def _report(code: GeneratedCode, changes: list[FileChange], out: Path, *, check: bool) -> None:
     for change in changes:
         if change.kind is not ChangeKind.UNCHANGED:
             reason = f" ({change.reason})" if change.reason else ""
-            typer.echo(f"{change.kind.value:9} {os.path.relpath(change.path, base)}{reason}")
+            typer.echo(f"{change.kind.value:9} {_relative(change, out)}{reason}")
     for skipped in code.skipped:
         typer.echo(f"{'skip':9} {skipped.path} ({skipped.ros_type}): {skipped.reason}")
     counts = {k: sum(1 for c in changes if c.kind is k) for k in ChangeKind}
+    would = "would be " if check else ""
     typer.echo(
         f"{len(code.files)} classes generated, {len(code.skipped)} skipped; "
-        f"files: {counts[ChangeKind.CREATE]} created, {counts[ChangeKind.UPDATE]} updated, "
+        f"files: {counts[ChangeKind.CREATE]} {would}created, "
+        f"{counts[ChangeKind.UPDATE]} {would}updated, "
         f"{counts[ChangeKind.UNCHANGED]} unchanged, {counts[ChangeKind.SKIP]} kept"
     )
+
+
+def _json(code: GeneratedCode, changes: list[FileChange], out: Path, *, check: bool) -> str:
+    data = {
+        "out": out.as_posix(),
+        "check": check,
+        "up_to_date": not _drifted(changes),
+        "files": [
+            {"path": _relative(c, out), "change": c.kind.value, "reason": c.reason or None}
+            for c in changes
+        ],
+        "generated": [
+            {"type": f.ros_type, "class": f.cs_class.full_name, "path": f.path} for f in code.files
+        ],
+        "skipped": [
+            {"type": s.ros_type, "class": s.cs_class.full_name, "path": s.path, "reason": s.reason}
+            for s in code.skipped
+        ],
+    }
+    return json.dumps(data, indent=2)
 
 
 def register(app: typer.Typer) -> None:
@@ -136,8 +170,26 @@ def register(app: typer.Typer) -> None:
             help="Root namespace instead of RosSharp.RosBridgeClient.MessageTypes (generates all).",
         ),
         everything: bool = typer.Option(False, "--all", help="Generate every type found."),
+        check: bool = typer.Option(
+            False,
+            "--check",
+            help="Write nothing; exit 1 if a file in --out would be created or changed.",
+        ),
+        quiet: bool = typer.Option(
+            False, "--quiet", "-q", help="Print only errors (and, with --check, what differs)."
+        ),
+        as_json: bool = typer.Option(False, "--json", help="Print the result as JSON."),
     ) -> None:
-        """Generate ROS# C# classes for types and everything they use."""
+        """Generate ROS# C# classes for types and everything they use.
+
+        Examples:
+
+          scaffold msgs gen my_msgs/msg/Status -o Assets/RosMessages
+
+          scaffold msgs gen my_msgs --ros 1 --path ~/ws/src -o Assets/Ros
+
+          scaffold msgs gen my_msgs -o Assets/Ros --check   (1 if stale)
+        """
         code, changes = run(
             list(names or []),
             out,
@@ -147,5 +199,21 @@ def register(app: typer.Typer) -> None:
             namespace,
             everything,
             use_environment=not no_env,
+            write=not check,
         )
-        _report(code, changes, out)
+        if as_json:
+            typer.echo(_json(code, changes, out, check=check))
+        elif not quiet:
+            _report(code, changes, out, check=check)
+        drifted = _drifted(changes)
+        if check and drifted:
+            if not as_json:
+                # Also under --quiet: a failed check says what differs and what fixes it.
+                for change in drifted if quiet else ():
+                    typer.echo(f"{change.kind.value:9} {_relative(change, out)}", err=True)
+                typer.echo(
+                    f"{out}: {len(drifted)} files differ from what msgs gen generates; "
+                    "run the same command without --check",
+                    err=quiet,
+                )
+            raise typer.Exit(int(Exit.DRIFT))

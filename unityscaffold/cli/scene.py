@@ -77,7 +77,12 @@ def ls(
     scene: Annotated[Path, typer.Argument(help="A .unity scene or .prefab file.")],
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON instead of a tree.")] = False,
 ) -> None:
-    """Show the hierarchy with each GameObject's components (script names when resolvable)."""
+    """Show the hierarchy with each GameObject's components (script names when resolvable).
+
+    Example:
+
+      scaffold scene ls Assets/Scenes/Main.unity --json
+    """
     doc = _load_checked(scene)
     names = _script_names(scene)
     if as_json:
@@ -139,7 +144,13 @@ def attach(
         bool, typer.Option("--dry-run", help="Print the unified diff; write nothing.")
     ] = False,
 ) -> None:
-    """Attach a MonoBehaviour to a GameObject, or update the one already there (idempotent)."""
+    """Attach a MonoBehaviour to a GameObject, or update the one already there (idempotent).
+
+    Example:
+
+      scaffold scene attach Assets/Scenes/Main.unity -g Robot/lidar
+      --script Assets/Scripts/Lidar.cs --set Range=12.5 --create
+    """
     ref = _script_ref(script, guid, dll_class)
     pairs = [parse_assignment(a) for a in assignments or []]
     doc = _load_checked(scene)

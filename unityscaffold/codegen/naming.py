@@ -146,7 +146,9 @@ def namespace_segment(package: str) -> str:
     if not is_identifier(segment) or segment in CSHARP_KEYWORDS:
         raise UserError(
             f"package '{package}' cannot become a C# namespace (got '{segment}')",
-            hint="the package name must start with a letter and hold only letters, digits and '_'",
+            hint="ROS package names start with a letter and hold only letters, digits and '_' "
+            "(REP 144); rename the package (its folder and package.xml): every class is in a "
+            "namespace named after its package, whatever the root namespace",
         )
     return segment
 

@@ -230,9 +230,18 @@ def edit_manifest(
     yaml, document = _load(text, path)
     _check_dialect(document, discovery, path)
     added_interface = _add_interface(document, cache_entry, path)
-    topics, skipped_topics = _add_topics(_list(document, "topics", path), discovery.topics)
-    services, skipped_services = _add_services(
-        _list(document, "services", path), discovery.services
+    # A list is touched only when something is found for it: an empty "services:" whose
+    # entries are commented out would otherwise become "services: []", and uncommenting an
+    # example under it would then be a YAML error.
+    topics, skipped_topics = (
+        _add_topics(_list(document, "topics", path), discovery.topics)
+        if discovery.topics
+        else ([], [])
+    )
+    services, skipped_services = (
+        _add_services(_list(document, "services", path), discovery.services)
+        if discovery.services
+        else ([], [])
     )
     result = ManifestEdit(
         text,

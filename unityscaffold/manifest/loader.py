@@ -45,7 +45,8 @@ def load_manifest(path: Path) -> Manifest:
     except FileNotFoundError:
         raise UserError(
             f"manifest {path} does not exist",
-            hint="create one with 'scaffold init', or pass its path",
+            hint="create one with 'scaffold init', or pass its path (without one, scaffold "
+            "looks for robot.yaml here and in the folders above, up to the repository's root)",
         ) from None
     except IsADirectoryError:
         raise UserError(

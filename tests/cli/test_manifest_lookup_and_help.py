@@ -1,0 +1,79 @@
+"""Without a MANIFEST argument, apply, plan and discover use the nearest robot.yaml from the
+current folder upward, stopping at the repository's root as git does; every command's --help
+shows examples."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from helpers import run_cli
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    root = tmp_path / "robot"
+    assert run_cli("init", str(root), "--ros", "1").code == 0
+    (root / ".git").mkdir()  # the repository's root, where the search stops
+    assert run_cli("apply", str(root / "robot.yaml")).code == 0
+    return root
+
+
+def test_apply_check_finds_the_manifest_in_a_folder_above(
+    project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(project / "Assets" / "Scenes")
+    clean = run_cli("apply", "--check", "--quiet")
+    assert (clean.code, clean.err) == (0, "")
+    plan = run_cli("plan")
+    assert plan.code == 0 and "the project matches the manifest" in plan.out
+    text = (project / "robot.yaml").read_text()
+    (project / "robot.yaml").write_text(text.replace("timeout: 10", "timeout: 20"))
+    drift = run_cli("apply", "--check", "--quiet")
+    assert drift.code == 1
+    # named as the user would type it from here
+    assert "run `scaffold apply ../../robot.yaml`" in drift.err
+
+
+def test_the_search_stops_at_the_repository_root(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (tmp_path / "robot.yaml").write_text("version: 1\nros: 1\n")  # outside the repository
+    inner = tmp_path / "repo" / "sub"
+    inner.mkdir(parents=True)
+    (tmp_path / "repo" / ".git").mkdir()
+    monkeypatch.chdir(inner)
+    run = run_cli("plan")
+    assert run.code == 2
+    assert "manifest robot.yaml does not exist" in run.err
+    assert "looks for robot.yaml here and in the folders above" in run.err
+
+
+def test_a_manifest_given_is_used_as_given(project: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(project / "Assets")
+    run = run_cli("plan", "missing.yaml")
+    assert run.code == 2 and "manifest missing.yaml does not exist" in run.err
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        [],
+        ["apply"],
+        ["plan"],
+        ["init"],
+        ["discover"],
+        ["schema"],
+        ["msgs", "list"],
+        ["msgs", "show"],
+        ["msgs", "gen"],
+        ["scene", "ls"],
+        ["scene", "attach"],
+    ],
+    ids=lambda c: " ".join(c) or "scaffold",
+)
+def test_every_command_help_has_examples(command: list[str]) -> None:
+    run = run_cli(*command, "--help")
+    assert run.code == 0, run.err
+    assert "Example" in run.out
+    assert f"scaffold {' '.join(command)}".strip() in run.out.split("Example", 1)[1]
