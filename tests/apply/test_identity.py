@@ -192,3 +192,22 @@ def test_a_component_the_manifest_drops_is_removed_by_file_id_after_a_rename(
     assert run.code == 0, run.err
     assert "remove component TwistSubscriber from TurtleBot3" in run.out
     assert "81c5dfb51482c2e47b602e8096d45712" not in _scene(project).read_text()
+
+
+def test_a_new_gameobject_at_the_old_path_is_the_manifests_and_the_moved_one_is_cleared(
+    project: Path,
+) -> None:
+    _rename(project, "TurtleBot3", "Burger")
+    # Then a new, empty TurtleBot3 (GameObject + Transform, as Create Empty makes it).
+    doc = SceneDocument.load(_scene(project))
+    assert doc.ensure_gameobject("TurtleBot3", create=True)
+    doc.write()
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 0, run.err
+    assert "add OdomSubscriber to TurtleBot3" in run.out
+    assert "re-add" not in run.out
+    assert "remove topic /odom from TurtleBot3" in run.out  # from the one now called Burger
+    after = SceneDocument.load(_scene(project))
+    burger = after.find_gameobject("Burger")
+    assert [c.type_name for c in after.components_of(burger)] == ["Transform"]
+    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0

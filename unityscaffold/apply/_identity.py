@@ -42,12 +42,25 @@ class Moved:
 
 
 def moved_objects(doc: SceneDocument, recorded: Mapping[str, int]) -> dict[str, str]:
-    """Recorded path -> the path the same GameObject has now, for each one that moved."""
+    """Recorded path -> the path the same GameObject has now, for each one that moved.
+
+    A recorded path that names a GameObject again (one made in Unity after the rename) is left
+    out, with the recorded paths under it: the manifest's path then means that object, and what
+    apply had attached to the moved one is pruned by fileID like any component the manifest no
+    longer asks for.
+    """
     paths = doc.hierarchy.paths
-    return {
+    moved = {
         old: paths[file_id]
         for old, file_id in recorded.items()
         if file_id in paths and paths[file_id] != old
+    }
+    taken = set(paths.values())
+    replaced = [old for old in moved if old in taken]
+    return {
+        old: new
+        for old, new in moved.items()
+        if not any(old == r or old.startswith(r + "/") for r in replaced)
     }
 
 

@@ -95,7 +95,8 @@ class _SceneEditor:
         self.attached: set[int] = set()  # fileIDs of the components the manifest asks for
         self.keys: dict[tuple[str, str, int], list[str]] = {}  # (path, GUID, fileID) -> ids
         self.adopted: dict[tuple[str, str, int, str], int] = {}  # ... + id -> instance taken
-        self.entries: set[tuple[str, str]] = set()  # (path, lock entry) an earlier apply made
+        # (path, lock entry) of components an earlier apply made that are gone from the scene
+        self.deleted: set[tuple[str, str]] = set()
 
     def path(self, named: str) -> str:
         """Where the GameObject the manifest calls ``named`` is (renames followed)."""
@@ -171,9 +172,8 @@ class _SceneEditor:
             self.adopted[(path, script.guid, script.file_id, key)] = adopt.file_id
         name = (script.class_name or script.guid) + (f"#{key}" if key else "")
         added = f"add {name} to {path}"
-        # an instance with an id was there before only if the lock has that very entry
-        before = (path, entry) in self.entries if key else (path, script.guid) in self.owned
-        if not existed and before:
+        # A lock entry (an instance with an id: that very entry) whose component is gone.
+        if not existed and (path, entry) in self.deleted:
             readded = f"re-add {name} to {path} (removed in Unity since the last apply)"
             if readded not in self.plan.edits:
                 self.plan.edits.append(readded)
@@ -510,16 +510,14 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
     m = ctx.manifest
     now = _follow(ctx, plan, doc, lock)
     moves = moved_objects(doc, lock.gameobjects_in(plan.relative))
-    owned = {
-        (now_at(c.gameobject, moves) or c.gameobject, c.script)
-        for c in lock.components
-        if c.scene == plan.relative
-    }
+    recorded = [c for c in lock.components if c.scene == plan.relative]
+    owned = {(now_at(c.gameobject, moves) or c.gameobject, c.script) for c in recorded}
     editor = _SceneEditor(plan, doc, owned, now)
-    editor.entries = {
+    # Components apply attached that are gone from the scene: attaching them again is news.
+    editor.deleted = {
         (now_at(c.gameobject, moves) or c.gameobject, c.entry)
-        for c in lock.components
-        if c.scene == plan.relative
+        for c in recorded
+        if not c.file_id or doc.document(c.file_id) is None
     }
     connector_id = 0
     connector_script = None
