@@ -326,3 +326,12 @@ components:
     readers = [c for c in scene.components_of("Pad") if c.script and c.script.guid == JOY]
     assert [scene.field(c, "name") for c in readers] == ["Horizontal"]
     assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+
+
+def test_the_manifest_offers_exactly_the_built_in_classes_and_layers_the_unity_stage_knows():
+    from unityscaffold.manifest import _spec as spec
+    from unityscaffold.unity import builtins
+
+    assert spec.BUILTIN_TYPES == builtins.BUILTIN_TYPES
+    assert spec.BUILTIN_LAYERS == builtins.BUILTIN_LAYERS
+    assert all(builtins.layer_number(n) == spec.LAYER_NUMBERS[n] for n in spec.BUILTIN_LAYERS)

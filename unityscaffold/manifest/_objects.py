@@ -10,7 +10,6 @@ from unityscaffold.manifest._fields import read_fields
 from unityscaffold.manifest._read import Reader, one_of, suggest
 from unityscaffold.manifest._yaml import YMap, YNode, YScalar, YSeq
 from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
-from unityscaffold.unity.builtins import BUILTIN_LAYERS, BUILTIN_TYPES, layer_number
 
 __all__ = ["read_object"]
 
@@ -68,12 +67,12 @@ def _layer(r: Reader, m: YMap) -> int | None:
     value = entry.value.value if isinstance(entry.value, YScalar) else None
     if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= 31:
         return value
-    if isinstance(value, str) and layer_number(value) is not None:
-        return layer_number(value)
-    hint = suggest(value, BUILTIN_LAYERS) if isinstance(value, str) else None
+    if isinstance(value, str) and value in spec.LAYER_NUMBERS:
+        return spec.LAYER_NUMBERS[value]
+    hint = suggest(value, spec.BUILTIN_LAYERS) if isinstance(value, str) else None
     r.invalid(
         entry,
-        "a layer number 0–31 or " + one_of(BUILTIN_LAYERS),
+        "a layer number 0–31 or " + one_of(spec.BUILTIN_LAYERS),
         hint=hint or "a layer you added in Unity goes by its number (Tags and Layers)",
     )
     return None
@@ -113,16 +112,16 @@ def _builtin(r: Reader, node: YNode) -> BuiltinComponent | None:
 
 
 def _type_ok(r: Reader, node: YNode, value: object) -> bool:
-    if isinstance(value, str) and value in BUILTIN_TYPES:
+    if isinstance(value, str) and value in spec.BUILTIN_TYPES:
         return True
     word = value if isinstance(value, str) else ""
-    hint = suggest(word, BUILTIN_TYPES) or (
+    hint = suggest(word, spec.BUILTIN_TYPES) or (
         "scripts (uGUI's Image, CanvasScaler, …; ROS#'s; yours) go under 'components:'"
     )
     r.error(
         node.location,
         f"unsupported built-in component {word or value!r}",
-        expected=one_of(BUILTIN_TYPES),
+        expected=one_of(spec.BUILTIN_TYPES),
         hint=hint,
     )
     return False

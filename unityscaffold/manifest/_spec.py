@@ -22,7 +22,6 @@ from unityscaffold.manifest.model import (
     Role,
     Serializer,
 )
-from unityscaffold.unity.builtins import BUILTIN_LAYERS, BUILTIN_TYPES
 
 __all__ = ["SECTIONS", "Key", "Section", "patterns"]
 
@@ -49,6 +48,23 @@ NOT_PORTABLE = "\\\\"
 NOT_RELATIVE = "\\\\|^/|^[A-Za-z]:"
 # A C# keyword as one part of a dotted name; such a class or namespace would not compile.
 KEYWORD_PART = f"(^|[.])({'|'.join(sorted(CSHARP_KEYWORDS))})([.]|$)"
+
+#: The built-in component classes an object may declare and the built-in layers by number.
+#: ``unity/builtins.py`` holds their layouts; a test keeps the two lists equal (importing the
+#: unity stage here would load the whole scene patcher for every command that reads a manifest).
+BUILTIN_TYPES = (
+    "AudioListener",
+    "BoxCollider",
+    "Camera",
+    "Canvas",
+    "CanvasRenderer",
+    "CapsuleCollider",
+    "Light",
+    "Rigidbody",
+    "SphereCollider",
+)
+LAYER_NUMBERS = {"Default": 0, "TransparentFX": 1, "Ignore Raycast": 2, "Water": 4, "UI": 5}
+BUILTIN_LAYERS = list(LAYER_NUMBERS)
 
 NO_DEFAULT = object()
 DEFAULT_TIMEOUT = 10
