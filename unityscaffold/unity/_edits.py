@@ -255,7 +255,9 @@ def set_fields(docs: Documents, doc: Doc, fields: Sequence[tuple[str, FieldValue
     for position, (name, value) in enumerate(fields):
         lines = _emit(docs, name, value)
         if F.field_span(doc, name) is not None:
-            if value_equals(F.parse_field(doc, name), value):
+            # bytes as they would be written (the usual re-apply) need no YAML parse to compare
+            same = F.field_text(doc, name) == "".join(line + "\n" for line in lines)
+            if same or value_equals(F.parse_field(doc, name), value):
                 continue
             T.replace_field(doc, name, lines)
         else:
