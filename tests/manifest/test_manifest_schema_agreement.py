@@ -42,6 +42,19 @@ BASE: dict[str, Any] = {
     ],
     "services": [{"name": "/reset", "type": "std_srvs/Trigger", "role": "client"}],
     "components": [{"script": "TwistSubscriber", "gameobject": "Robot", "fields": {"Topic": "/x"}}],
+    "objects": [
+        {
+            "path": "Robot/Camera",
+            "position": [0, 1, 0],
+            "rotation": [0, 90, 0],
+            "layer": 3,
+            "ui": {"size": [100, 20]},
+            "components": [
+                "Camera",
+                {"type": "BoxCollider", "id": "a", "fields": {"m_Size": [1, 2, 3]}},
+            ],
+        }
+    ],
 }
 INF, NAN = float("inf"), float("nan")
 # (where, value): where is a dotted path into BASE, list positions as numbers.
@@ -135,6 +148,43 @@ VARIANTS: list[tuple[str, Any]] = [
     ("topics.0.gameobject", "A//B"),
     ("topics.0.gameobject", "Robot\\arm"),
     ("topics.0.gameobject", "/Robot"),
+    # declared objects and package scripts
+    ("objects.0.position", [0, 1]),
+    ("objects.0.position", [0, 1, "x"]),
+    ("objects.0.position", [0, 1, INF]),
+    ("objects.0.rotation", [0.5, 90.0, -45]),
+    ("objects.0.rotation", 90),
+    ("objects.0.scale", [1, 1, 1, 1]),
+    ("objects.0.layer", 31),
+    ("objects.0.layer", 32),
+    ("objects.0.layer", -1),
+    ("objects.0.layer", "UI"),
+    ("objects.0.layer", "Ignore Raycast"),
+    ("objects.0.layer", "ui"),
+    ("objects.0.layer", True),
+    ("objects.0.active", False),
+    ("objects.0.active", "no"),
+    ("objects.0.tag", "MainCamera"),
+    ("objects.0.tag", ""),
+    ("objects.0.ui", True),
+    ("objects.0.ui", False),
+    ("objects.0.ui", "yes"),
+    ("objects.0.ui", {"anchor_min": [0, 1], "pivot": [0.5, 0.5]}),
+    ("objects.0.ui", {"anchors": [0, 1]}),
+    ("objects.0.ui", {"size": [1]}),
+    ("objects.0.path", "A//B"),
+    ("objects.0.path", "/Robot"),
+    ("objects.0.components", ["Rigidbody", "Canvas", "CanvasRenderer"]),
+    ("objects.0.components", ["Image"]),
+    ("objects.0.components", [{"type": "Light", "id": "a b"}]),
+    ("objects.0.components", [{"id": "x"}]),
+    ("objects.0.components", [{"type": "Light", "colour": 1}]),
+    ("components.0.id", "horizontal"),
+    ("components.0.id", "a b"),
+    ("components.0.guid", "0cd44c1031e13a943bb63640046fad76"),
+    ("components.0.guid", "0CD44C1031E13A943BB63640046FAD76"),
+    ("components.0.dll_class", "UnityEngine.UI.Image"),
+    ("components.0.dll_class", "Not A.Class"),
 ]
 # Refused by scaffold, accepted by the schema: "inside the project" is path arithmetic
 # (normalising '..', following symbolic links) that JSON Schema cannot do.

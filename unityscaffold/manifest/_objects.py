@@ -51,13 +51,19 @@ def _vector(r: Reader, m: YMap, key: str, size: int) -> tuple[float, ...] | None
         isinstance(node, YSeq)
         and len(numbers) == len(node.items) == size
         and all(isinstance(n, (int, float)) and not isinstance(n, bool) for n in numbers)
-        and all(math.isfinite(n) for n in numbers)  # type: ignore[arg-type]
+        and all(math.isfinite(n) and abs(n) <= spec.FLOAT32_MAX for n in numbers)  # type: ignore[arg-type]
     )
     if not ok:
         example = ", ".join(["0"] * size)
-        r.invalid(entry, f"a list of {size} numbers such as [{example}]")
+        r.invalid(entry, f"a list of {size} numbers such as [{example}]", hint=_hint(numbers))
         return None
     return tuple(float(n) for n in numbers)  # type: ignore[arg-type]
+
+
+def _hint(numbers: list[object]) -> str | None:
+    if any(isinstance(n, float) and not math.isfinite(n) for n in numbers):
+        return "a scene stores finite 32-bit floats"
+    return None
 
 
 def _layer(r: Reader, m: YMap) -> int | None:

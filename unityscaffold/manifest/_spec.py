@@ -445,11 +445,15 @@ COMPONENT = Section(
             },
         ),
     ),
-    rules=({"anyOf": [{"required": ["script"]}, {"required": ["guid"]}]},),
+    rules=(
+        {"anyOf": [{"required": ["script"]}, {"required": ["guid"]}]},
+        {"dependentRequired": {"dll_class": ["guid"]}},
+    ),
 )
 
-_VEC3 = {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3}
-_VEC2 = {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}
+_FLOAT = {"type": "number", "minimum": -FLOAT32_MAX, "maximum": FLOAT32_MAX}
+_VEC3 = {"type": "array", "items": _FLOAT, "minItems": 3, "maxItems": 3}
+_VEC2 = {"type": "array", "items": _FLOAT, "minItems": 2, "maxItems": 2}
 
 UI = Section(
     "ui",
