@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TypeVar
 
+from unityscaffold.apply._moves import Moves
 from unityscaffold.apply._rossharp import RESERVED_NAMES
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.codegen.layout import output_files
@@ -176,14 +177,27 @@ def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[Des
     return metas
 
 
-def _check_class_names(manifest: Manifest, scripts: dict[str, ScriptInfo]) -> None:
+def _script_guid(manifest: Manifest, path: Path, salt: str, moves: Moves | None) -> str:
+    meta = path.with_name(path.name + ".meta")
+    if moves is not None and not meta.exists():
+        moved = moves.guid(path.name)
+        if moved is not None:
+            return moved
+    return meta_guid(meta, salt, manifest.asset_path(path))
+
+
+def _check_class_names(
+    manifest: Manifest, scripts: dict[str, ScriptInfo], moves: Moves | None
+) -> None:
     """A generated script must not share its class name with ROS#'s or another script's:
-    Unity and the manifest's ``components`` find scripts by that name."""
+    Unity and the manifest's ``components`` find scripts by that name. Scripts an earlier
+    apply generated in another output folder do not count: they move (``moves``)."""
     ours = manifest.asset_path(manifest.output_dir / "Scripts")
     elsewhere = {
         info.class_name: info.path
         for info in scripts.values()
         if not info.path.startswith(ours + "/")
+        and not (moves is not None and info.path in moves.owned)
     }
     items: tuple[Topic | Service, ...] = (*manifest.topics, *manifest.services)
     for item in items:
@@ -207,10 +221,15 @@ def _check_class_names(manifest: Manifest, scripts: dict[str, ScriptInfo]) -> No
 
 
 def plan_code(
-    manifest: Manifest, registry: Registry, salt: str, scripts: dict[str, ScriptInfo]
+    manifest: Manifest,
+    registry: Registry,
+    salt: str,
+    scripts: dict[str, ScriptInfo],
+    moves: Moves | None = None,
 ) -> CodePlan:
-    """Everything the manifest's topics and services need in C#, as desired files."""
-    _check_class_names(manifest, scripts)
+    """Everything the manifest's topics and services need in C#, as desired files; a script
+    moved from an earlier output folder keeps its GUIDs (``moves``)."""
+    _check_class_names(manifest, scripts, moves)
     items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
@@ -227,10 +246,8 @@ def plan_code(
         view = _view(manifest, item, spec, messages)
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
-        guid = meta_guid(path.with_name(path.name + ".meta"), salt, manifest.asset_path(path))
-        user_guid = meta_guid(
-            user_path.with_name(user_path.name + ".meta"), salt, manifest.asset_path(user_path)
-        )
+        guid = _script_guid(manifest, path, salt, moves)
+        user_guid = _script_guid(manifest, user_path, salt, moves)
         generated.append(DesiredFile(path, rendered.plumbing.encode()))
         created_once += [
             DesiredFile(user_path, rendered.user.encode(), create_only=True),

@@ -7,6 +7,7 @@ its declaration would not compile.
 
 from __future__ import annotations
 
+from collections.abc import Set
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -37,11 +38,20 @@ def _untouched(path: Path, digest: str, relative: str, notes: list[str]) -> bool
         return False
 
 
-def plan_pruning(manifest: Manifest, lock: LockFile, wanted: set[str]) -> Pruning:
+def plan_pruning(
+    manifest: Manifest,
+    lock: LockFile,
+    wanted: set[str],
+    moved: Set[str] = frozenset(),
+) -> Pruning:
+    """``moved`` user halves were copied to the new output folder, so they go even if edited."""
     result = Pruning()
     root = manifest.project_root
     for relative, digest in sorted(lock.user_files.items()):
         if relative in wanted:
+            continue
+        if relative in moved:
+            result.deletions.append(root / relative)
             continue
         state = _untouched(root / relative, digest, relative, result.notes)
         if state is False:

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._lock import LockFile, recorded, sha256
+from unityscaffold.apply._moves import Moves
 from unityscaffold.fileout import DesiredFile, same_text
 from unityscaffold.manifest.model import Manifest
 
@@ -24,6 +25,7 @@ class UserFiles:
     desired: list[DesiredFile] = field(default_factory=list)
     digests: dict[str, str] = field(default_factory=dict)  # for the new lock
     notes: list[str] = field(default_factory=list)
+    moved: set[str] = field(default_factory=set)  # old user halves whose content moved here
 
 
 def _regenerates(path: Path, code: CodePlan) -> bool:
@@ -35,7 +37,11 @@ def _regenerates(path: Path, code: CodePlan) -> bool:
         return True
 
 
-def plan_user_files(manifest: Manifest, code: CodePlan, lock: LockFile) -> UserFiles:
+def plan_user_files(
+    manifest: Manifest, code: CodePlan, lock: LockFile, moves: Moves | None = None
+) -> UserFiles:
+    """User halves to create; one moved from an earlier output folder (``moves``) keeps the
+    content it has there, your code included, and the old copy goes (``UserFiles.moved``)."""
     result = UserFiles()
     initial = {d.path: d.content for d in code.created_once}
     for script in code.scripts:
@@ -46,6 +52,17 @@ def plan_user_files(manifest: Manifest, code: CodePlan, lock: LockFile) -> UserF
             current = script.user_path.read_bytes()
         except FileNotFoundError:
             current = None
+        source = moves.sources.get(script.user_path.name) if moves is not None else None
+        if current is None and source is not None:
+            try:
+                old = (manifest.project_root / source).read_bytes()
+            except OSError:
+                old = None
+            if old is not None:
+                result.desired.append(DesiredFile(script.user_path, old, create_only=True))
+                result.digests[relative] = lock.user_files[source]
+                result.moved.add(source)
+                continue
         if current is None or digest is None or same_text(current, fresh):
             # New, unknown to the lock (kept as it is), or already as apply would create it.
             result.desired.append(DesiredFile(script.user_path, fresh, create_only=True))

@@ -21,6 +21,7 @@ from unityscaffold.apply._lock import (
     recorded,
     sha256,
 )
+from unityscaffold.apply._moves import find_moves
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
@@ -138,20 +139,22 @@ def make_plan(
     salt = project_salt(project)
     metas = plan_script_metas(manifest, script_index(project), salt)
     scripts = metas.scripts
-    code: CodePlan = plan_code(manifest, registry, salt, scripts)
+    moves = find_moves(manifest, lock)
+    code: CodePlan = plan_code(manifest, registry, salt, scripts, moves)
     rossharp = RosSharp.of(project, scripts)
     scenes = plan_scenes(manifest, code, rossharp, scripts, lock, follow_renames=follow_renames)
 
     generated = list(code.generated)
     check_name_lengths(d.path for d in (*generated, *code.created_once))
     conflicts = [] if force else _conflicts(manifest, generated, lock)
-    user = plan_user_files(manifest, code, lock)
+    user = plan_user_files(manifest, code, lock, moves)
     user_paths = {d.path for d in user.desired}
     desired = generated + [d for d in code.created_once if d.path not in user_paths]
     desired += user.desired + metas.desired + _settings_change(manifest)
     desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
 
-    pruning = plan_pruning(manifest, lock, {manifest.asset_path(d.path) for d in desired})
+    wanted = {manifest.asset_path(d.path) for d in desired}
+    pruning = plan_pruning(manifest, lock, wanted, user.moved)
     deletions = pruning.deletions
     # Temporary files may sit beside any file apply writes: scenes, settings, generated files.
     beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
