@@ -1,9 +1,11 @@
 """Property: every apply that succeeds is a fixed point, whatever the layout.
 
 Random valid manifests on a fresh ``init`` project (ROS 2, no ``Library/``): topics and services
-on new, existing and connector GameObjects, and ROS#'s stock scripts from the catalog with
-fields of every kind set, references included. After ``apply``, ``apply --check`` exits 0 and a
-second ``apply`` writes nothing. Derandomized, so CI sees the same examples on every run.
+on new, existing and connector GameObjects; ROS#'s stock scripts from the catalog (two instances
+of one told apart by ``id``) with fields of every kind set, references to GameObjects,
+transforms, built-in components and scripts by class included; declared objects with their
+transform, flags, built-in components and UI layout. After ``apply``, ``apply --check`` exits 0
+and a second ``apply`` writes nothing. Derandomized, so CI sees the same examples on every run.
 """
 
 from __future__ import annotations
@@ -57,7 +59,8 @@ _CONCRETE = {
     for name in (script.class_name, *script.bases)
     if name not in ("MonoBehaviour",)
 }
-_BUILT_IN = {"ref:Camera": "Main Camera", "ref:Light": "Directional Light"}
+# Built-in components the init scene has, on the GameObjects that hold them.
+_BUILT_IN = {"Camera": "Main Camera", "Light": "Directional Light"}
 _STRUCTS = {
     "Vector2": "{x: 1, y: -2}",
     "Vector3": "{x: 0.5, y: 0, z: -1}",
@@ -92,8 +95,6 @@ def _field_value(
         one = st.sampled_from(sorted(CATALOG.enums[kind[5:]]))
     elif kind in ("ref:Transform", "ref:GameObject"):
         one = st.sampled_from(targets).map(lambda p: f'"@{p}"')
-    elif kind in _BUILT_IN:
-        one = st.just(f'"@{_BUILT_IN[kind]}"')
     elif kind.startswith("ref:") and holders.get(kind[4:].rsplit(".", 1)[-1]):
         one = st.sampled_from(holders[kind[4:].rsplit(".", 1)[-1]]).map(lambda p: f'"@{p}"')
     else:
@@ -146,12 +147,20 @@ def manifests(draw: st.DrawFn) -> str:
             if concrete is not None and draw(st.booleans()):
                 stock.append((concrete, draw(places)))
     stock = list({(s.class_name, p): (s, p) for s, p in stock}.values())
+    # A second instance of a script on the same GameObject: both are then told apart by `id`.
+    if stock and draw(st.booleans()):
+        stock.append(draw(st.sampled_from(stock)))
+    twice = {(s.class_name, p) for s, p in stock if stock.count((s, p)) > 1}
     used |= {p for _, p in stock}
-    # Where exactly one script fits a class: a reference there is not ambiguous.
+    objects, built_in = draw(_objects())
+    used |= {path for path, _ in built_in}
+    # Where exactly one component fits a class: a reference there is not ambiguous.
     fitting: dict[tuple[str, str], int] = {}
     for script, place in stock:
         for name in (script.class_name, *script.bases):
             fitting[name, place] = fitting.get((name, place), 0) + 1
+    for place, name in [*built_in, *((p, c) for c, p in _BUILT_IN.items())]:
+        fitting[name, place] = 1
     holders: dict[str, list[str]] = {}
     for (name, place), count in sorted(fitting.items()):
         if count == 1:
@@ -159,16 +168,60 @@ def manifests(draw: st.DrawFn) -> str:
     targets = sorted(used | set(EXISTING))
     if stock:
         lines.append("components:")
+    seen: dict[tuple[str, str], int] = {}
     for script, place in stock:
         lines += [
             f"  - script: {script.class_name}",
             f'    gameobject: "{place}"',
             "    create: true",
         ]
+        if (script.class_name, place) in twice:
+            index = seen[script.class_name, place] = seen.get((script.class_name, place), -1) + 1
+            lines.append(f"    id: i{index}")
         fields = _fields(draw, script, targets, holders)
         if fields:
             lines.append("    fields: {" + ", ".join(fields) + "}")
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + objects) + "\n"
+
+
+_VECTOR = st.lists(
+    st.sampled_from(["0", "1", "-2.5", "0.1", "90", "45", "-30"]), min_size=3, max_size=3
+)
+TAGS = ["Untagged", "Respawn", "Finish", "EditorOnly", "MainCamera", "Player", "GameController"]
+BUILT_IN = ["Rigidbody", "BoxCollider", "SphereCollider", "CapsuleCollider", "Light", "Camera"]
+UI = [
+    "  - {path: Canvas, ui: true, components: [Canvas, CanvasRenderer]}",
+    "  - {path: Canvas/Panel, ui: {anchor_min: [0, 1], anchor_max: [0, 1], position: [90, -20],"
+    " size: [160, 30]}, components: [CanvasRenderer]}",
+]
+
+
+@st.composite
+def _objects(draw: st.DrawFn) -> tuple[list[str], list[tuple[str, str]]]:
+    """Declared objects (transform, flags, built-in components, UI) and (path, class) of the
+    built-in components they declare."""
+    paths = draw(st.lists(st.sampled_from([*NEW, *EXISTING]), max_size=3, unique=True))
+    lines: list[str] = []
+    built_in: list[tuple[str, str]] = []
+    for path in paths:
+        keys = [f'path: "{path}"']
+        for key in ("position", "rotation", "scale"):
+            if draw(st.booleans()):
+                keys.append(f"{key}: [{', '.join(draw(_VECTOR))}]")
+        if draw(st.booleans()):
+            keys.append(f"active: {draw(st.sampled_from(['true', 'false']))}")
+        if draw(st.booleans()):
+            keys.append(f"tag: {draw(st.sampled_from(TAGS))}")
+        if draw(st.booleans()):
+            keys.append(f"layer: {draw(st.integers(0, 31))}")
+        classes = draw(st.lists(st.sampled_from(BUILT_IN), max_size=2, unique=True))
+        if classes:
+            keys.append(f"components: [{', '.join(classes)}]")
+        built_in += [(path, c) for c in classes]
+        lines.append("  - {" + ", ".join(keys) + "}")
+    if draw(st.booleans()):
+        lines += UI
+    return (["objects:", *lines] if lines else []), built_in
 
 
 def _fields(

@@ -3,7 +3,9 @@ its commented entries turned on, applies on a fresh ``init`` project: apply exit
 is clean, and a second apply writes nothing.
 
 A documentation example is a fenced ``yaml`` block of README.md or docs/*.md with a top-level
-``version:`` key (the fragments around them, such as the pre-commit hook, are not manifests).
+``version:`` key, or a fragment whose top-level keys are manifest sections (``objects:``,
+``components:``...), which is applied under a minimal header (ROS 2, the init scene). Other
+blocks, such as the pre-commit hook, are not manifests.
 """
 
 from __future__ import annotations
@@ -20,6 +22,8 @@ _FENCE = re.compile(r"(?ms)^```yaml\n(.*?)^```")
 # The starter's commented entries: "#  - {...}" items and their "#    key: ..." lines. Its
 # commented `interfaces:` folder is not an example: it names the user's own workspace.
 _ENTRY = re.compile(r"(?m)^#(  - |    \w)")
+_SECTIONS = ("connector", "topics", "services", "components", "objects")
+_HEADER = "version: 1\nros: 2\nscene: Assets/Scenes/Main.unity\n"
 
 
 def _examples() -> list[tuple[str, str]]:
@@ -28,9 +32,13 @@ def _examples() -> list[tuple[str, str]]:
         text = path.read_text(encoding="utf-8")
         for match in _FENCE.finditer(text):
             block = match.group(1)
-            if re.search(r"(?m)^version:", block):
-                line = text.count("\n", 0, match.start()) + 2
-                found.append((f"{path.relative_to(REPO).as_posix()}:{line}", block))
+            keys = re.findall(r"(?m)^(\w+):", block)
+            if "version" not in keys and keys and set(keys) <= set(_SECTIONS):
+                block = _HEADER + block
+            elif "version" not in keys:
+                continue
+            line = text.count("\n", 0, match.start()) + 2
+            found.append((f"{path.relative_to(REPO).as_posix()}:{line}", block))
     return found
 
 
@@ -55,7 +63,8 @@ def _applies_and_settles(project: Path, manifest: str) -> None:
 
 
 def test_the_documentation_has_manifest_examples() -> None:
-    assert any(where.startswith("docs/manifest.md:") for where, _ in EXAMPLES)
+    shown = [where for where, _ in EXAMPLES if where.startswith("docs/manifest.md:")]
+    assert len(shown) >= 3, shown  # the whole manifest, components with ids, objects
 
 
 @pytest.mark.parametrize(("where", "manifest"), EXAMPLES, ids=[w for w, _ in EXAMPLES])
