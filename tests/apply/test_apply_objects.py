@@ -335,3 +335,31 @@ def test_the_manifest_offers_exactly_the_built_in_classes_and_layers_the_unity_s
     assert spec.BUILTIN_TYPES == builtins.BUILTIN_TYPES
     assert spec.BUILTIN_LAYERS == builtins.BUILTIN_LAYERS
     assert all(builtins.layer_number(n) == spec.LAYER_NUMBERS[n] for n in spec.BUILTIN_LAYERS)
+
+
+@pytest.fixture
+def project_2020(project: Path) -> Path:
+    """The init project with a scene Unity 2020.3 saved (m_RootOrder, no SceneRoots)."""
+    demo = DATA.parent / "unity-robotics-hub" / "DemoScene.unity"
+    (project / "Assets" / "Scenes" / "Main.unity").write_bytes(demo.read_bytes())
+    return project
+
+
+def test_a_built_in_component_is_refused_in_a_scene_of_an_older_unity(project_2020):
+    scene = project_2020 / "Assets" / "Scenes" / "Main.unity"
+    before = scene.read_bytes()
+    run = _apply(project_2020, "objects:\n  - {path: Thing, components: [Rigidbody]}\n")
+    assert run.code == 2, run.out
+    assert "robot.yaml:6:" in run.err and "written as Unity 2022.3 writes them" in run.err
+    assert scene.read_bytes() == before
+
+
+def test_a_ui_object_in_a_scene_of_an_older_unity_follows_its_layout(project_2020):
+    run = _apply(project_2020, "objects:\n  - {path: Panel, ui: {size: [10, 20]}}\n")
+    assert run.code == 0, run.err
+    scene = _scene(project_2020)
+    rect = scene.document(scene.find_gameobject("Panel").transform_id or 0)
+    assert rect is not None and rect.class_id == 224
+    assert "\n  m_RootOrder: " in rect.text and "m_ConstrainProportionsScale" not in rect.text
+    assert "\n  m_SizeDelta: {x: 10, y: 20}\n" in rect.text
+    assert run_cli("apply", "--check", str(project_2020 / "robot.yaml")).code == 0
