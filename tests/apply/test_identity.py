@@ -211,3 +211,29 @@ def test_a_new_gameobject_at_the_old_path_is_the_manifests_and_the_moved_one_is_
     burger = after.find_gameobject("Burger")
     assert [c.type_name for c in after.components_of(burger)] == ["Transform"]
     assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+
+
+def test_a_declared_object_renamed_in_unity_is_reported_at_its_path_and_followed(
+    tmp_path: Path,
+) -> None:
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    project = tmp_path / "p"
+    manifest = project / "robot.yaml"
+    declared = (
+        "version: 1\nros: 2\nscene: Assets/Scenes/Main.unity\n"
+        "objects:\n  - {path: Base, position: [0, 1, 0], components: [Rigidbody]}\n"
+        "components:\n"
+        '  - {script: UrdfInertial, gameobject: Part, fields: {_rigidbody: "@Base"}}\n'
+    )
+    manifest.write_text(declared)
+    assert run_cli("apply", str(manifest)).code == 0
+    _rename(project, "Base", "Chassis")
+    run = run_cli("apply", str(manifest))
+    assert run.code == 2
+    assert "robot.yaml:5:12: error: `Base` is now `Chassis` in Main.unity" in run.err
+    assert "rename it at robot.yaml:5, robot.yaml:7" in run.err
+    objects = _gameobject_count(project)
+    assert run_cli("apply", "--follow-renames", str(manifest)).code == 0
+    assert manifest.read_text() == declared.replace("Base", "Chassis")
+    assert _gameobject_count(project) == objects
+    assert run_cli("apply", "--check", str(manifest)).code == 0

@@ -77,7 +77,7 @@ def now_at(path: str, moves: Mapping[str, str]) -> str | None:
 def report_moves(scene: str, moved: list[Moved]) -> LocatedError:
     """One diagnostic per renamed object, naming every manifest line that still has the old name."""
     groups: dict[tuple[str, str], list[Named]] = {}
-    for item in moved:
+    for item in sorted(moved, key=lambda m: (m.named.location.line, m.named.location.col)):
         groups.setdefault((item.named.path, item.now), []).append(item.named)
     problems = []
     for (old, new), named in groups.items():
