@@ -28,8 +28,9 @@ _STRUCTS = {
     "Color": "{r: 1, g: 0.5, b: 0, a: 1}",
 }
 _SCALARS = {"int": "7", "float": "0.25", "bool": "true", "string": "/robot/topic"}
-# Built-in components the init scene has, on the GameObjects that hold them.
-_BUILT_IN = {"ref:Camera": "Main Camera", "ref:Light": "Directional Light"}
+# Built-in components on the GameObjects that hold them: the init scene's, and a declared one.
+_BUILT_IN = {"ref:Camera": "Main Camera", "ref:Light": "Directional Light", "ref:Rigidbody": "Body"}
+_OBJECTS = "objects:\n  - {path: Body, components: [Rigidbody]}\n"
 
 
 @pytest.fixture
@@ -63,7 +64,7 @@ def _value(field: CatalogField, extra: list[str]) -> str | None:
     elif kind.startswith("ref:"):
         target = _concrete(kind[4:].rsplit(".", 1)[-1])
         if target is None:
-            return None  # a built-in component the init scene lacks (MeshRenderer, Rigidbody)
+            return None  # a built-in component objects: cannot declare (MeshRenderer)
         extra.append(
             f"  - {{script: {target.class_name}, gameobject: Holder{len(extra)}, create: true}}"
         )
@@ -84,6 +85,7 @@ def test_every_stock_script_attaches_without_library(project: Path, script: Cata
         + f"    fields: {{{fields}}}\n"
         + "\n".join(extra)
         + "\n"
+        + _OBJECTS
     )
     (project / "Assets" / "Scenes").mkdir(exist_ok=True)
     manifest = project / "robot.yaml"
