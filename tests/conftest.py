@@ -13,6 +13,12 @@ from pathlib import Path
 
 import pytest
 from helpers import SYSTEM_PYTHON, require
+from hypothesis import settings
+
+# Speed is measured by bench/, never asserted by tests: no per-example time limit, which on a
+# loaded machine turned one slow first call into a "Flaky" failure.
+settings.register_profile("unityscaffold", deadline=None)
+settings.load_profile("unityscaffold")
 
 REPO = Path(__file__).resolve().parent.parent
 ROS1_SHARE = Path("/usr/share")
