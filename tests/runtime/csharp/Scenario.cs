@@ -93,11 +93,15 @@ public static class Scenario
         var status = robot.AddComponent<BaseStatusSubscriber>();
         var scan = new GameObject("Lidar").AddComponent<ScanSubscriber>();
         int connectedFrame = -1;
-        Frames(4f, () =>
+        Action each = () =>
         {
             scan.ThisFrame = 0;
             if (connectedFrame < 0 && connector.IsConnected.WaitOne(0)) connectedFrame = Player.FrameCount;
-        });
+        };
+        // The 4 s window starts once connected: on a loaded machine connecting can take seconds.
+        float giveUp = Time.realtimeSinceStartup + 30;
+        while (connectedFrame < 0 && Time.realtimeSinceStartup < giveUp) Frames(0.05f, each);
+        Frames(4f, each);
         Report("connected_frame", connectedFrame);
         Report("updates", publisher.Updates);
         Report("odom", odom.Count);
