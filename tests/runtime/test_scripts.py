@@ -114,8 +114,9 @@ def test_sample_scripts_run_in_a_frame_loop(
     assert report["scan_most_in_one_frame"] == "1"
     # A connector that never connects: the documented warning, once, after SecondsTimeout.
     warning = (
-        f"[warning] BaseStatusSubscriber: no connection to {unreachable}; "
-        "subscription to /base_status is not set up."
+        f"[warning] BaseStatusSubscriber: no connection to {unreachable} within 1 s; "
+        "subscription to /base_status is not set up. "
+        "Is rosbridge running at that address and port?"
     )
     assert lines.count(warning) == 1, output
     # Nothing was thrown on the frame loop's thread: it ran to the end (an exception from a

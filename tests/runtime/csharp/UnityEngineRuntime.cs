@@ -165,6 +165,7 @@ namespace UnityEngine
         }
 
         public static void Log(object message) { Write("log", message); }
+        public static void Log(object message, Object context) { Write("log", message); }
         public static void LogWarning(object message) { Write("warning", message); }
         public static void LogWarning(object message, Object context) { Write("warning", message); }
         public static void LogError(object message) { Write("error", message); }

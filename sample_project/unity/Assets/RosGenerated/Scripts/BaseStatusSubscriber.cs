@@ -24,6 +24,9 @@ namespace RosGenerated
         // ROS# calls the handler on its socket thread; messages wait here for the main thread.
         private readonly Queue<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.BaseStatus> received = new Queue<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.BaseStatus>();
         private string subscriptionId;
+        // When the subscription was sent, until the first message or the one hint that none came.
+        private float silentSince = -1f;
+        private bool anyReceived;
 
         /// <summary>Handle one message; called on Unity's main thread, in arrival order.</summary>
         partial void OnMessage(global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.BaseStatus message);
@@ -41,18 +44,20 @@ namespace RosGenerated
             {
                 if (Time.realtimeSinceStartup > giveUp)
                 {
-                    Debug.LogWarning(GetType().Name + ": no connection to " + Connector.RosBridgeServerUrl + "; subscription to " + Topic + " is not set up.", this);
+                    Debug.LogWarning(GetType().Name + ": no connection to " + Connector.RosBridgeServerUrl + " within " + Connector.SecondsTimeout + " s; subscription to " + Topic + " is not set up. Is rosbridge running at that address and port?", this);
                     yield break;
                 }
                 yield return null;
             }
             subscriptionId = Connector.RosSocket.Subscribe<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.BaseStatus>(Topic, Receive, Throttle, Queue);
+            silentSince = Time.realtimeSinceStartup;
         }
 
         private void Receive(global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.BaseStatus message)
         {
             lock (received)
             {
+                anyReceived = true;
                 received.Enqueue(message);
                 while (received.Count > System.Math.Max(Queue, 1))
                 {
@@ -63,6 +68,18 @@ namespace RosGenerated
 
         protected virtual void Update()
         {
+            if (silentSince >= 0f && Time.realtimeSinceStartup - silentSince > Connector.SecondsTimeout)
+            {
+                // rosbridge refuses a type it cannot load in its own log only; ROS# is never told.
+                silentSince = -1f;
+                lock (received)
+                {
+                    if (!anyReceived)
+                    {
+                        Debug.Log(GetType().Name + ": nothing on " + Topic + " (diffbot_msgs/BaseStatus) " + Connector.SecondsTimeout + " s after subscribing. If it is published, rosbridge's log says why it is not passed on (a type rosbridge cannot load, for one).", this);
+                    }
+                }
+            }
             while (true)
             {
                 global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.BaseStatus message;

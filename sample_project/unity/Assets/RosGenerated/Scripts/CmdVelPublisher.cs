@@ -37,7 +37,7 @@ namespace RosGenerated
             {
                 if (Time.realtimeSinceStartup > giveUp)
                 {
-                    Debug.LogWarning(GetType().Name + ": no connection to " + Connector.RosBridgeServerUrl + "; publisher of " + Topic + " is not set up.", this);
+                    Debug.LogWarning(GetType().Name + ": no connection to " + Connector.RosBridgeServerUrl + " within " + Connector.SecondsTimeout + " s; publisher of " + Topic + " is not set up. Is rosbridge running at that address and port?", this);
                     yield break;
                 }
                 yield return null;

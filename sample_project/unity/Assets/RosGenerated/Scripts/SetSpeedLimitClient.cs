@@ -15,9 +15,14 @@ namespace RosGenerated
         public RosConnector Connector;
         [Tooltip("ROS service name.")]
         public string ServiceName = "/set_speed_limit";
+        [Tooltip("Seconds to wait for a response before warning that none came.")]
+        public float ResponseTimeout = 10f;
 
         // ROS# calls the response handler on its socket thread; responses wait here for the main thread.
         private readonly Queue<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitResponse> responses = new Queue<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitResponse>();
+        // When each unanswered call was made (main thread only). ROS# 2.2.1 cannot read
+        // rosbridge's failure reply (a text where it expects JSON) and never calls the handler.
+        private readonly Queue<float> pending = new Queue<float>();
 
         /// <summary>Handle a response; called on Unity's main thread.</summary>
         partial void OnResponse(global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitResponse response);
@@ -40,6 +45,7 @@ namespace RosGenerated
                 return;
             }
             Connector.RosSocket.CallService<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitRequest, global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitResponse>(ServiceName, Receive, request);
+            pending.Enqueue(Time.realtimeSinceStartup);
         }
 
         private void Receive(global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitResponse response)
@@ -59,11 +65,20 @@ namespace RosGenerated
                 {
                     if (responses.Count == 0)
                     {
-                        return;
+                        break;
                     }
                     response = responses.Dequeue();
                 }
+                if (pending.Count > 0)
+                {
+                    pending.Dequeue();
+                }
                 OnResponse(response);
+            }
+            if (pending.Count > 0 && Time.realtimeSinceStartup - pending.Peek() > ResponseTimeout)
+            {
+                Debug.LogWarning(GetType().Name + ": no response from " + ServiceName + " (diffbot_msgs/SetSpeedLimit) within " + ResponseTimeout + " s. Is it advertised? If so, rosbridge's log says why the call failed (a type rosbridge cannot load, for one).", this);
+                pending.Clear();
             }
         }
 
