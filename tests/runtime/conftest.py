@@ -20,6 +20,7 @@ from tests.runtime.runtime_helpers import (
     message_types,
     python_package_of,
     ros1_registry,
+    service_types,
 )
 
 
@@ -91,8 +92,11 @@ def ours_only_client(
     mcs: str, mono: str, rossharp_package: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> Path:
     """ROS#'s client without its message classes, ours (--include-shipped) for every ROS 1
-    message type instead (std_msgs/Time and Duration aside: ROS# maps them to its primitives)."""
+    message type and both halves of every service instead (std_msgs/Time and Duration aside:
+    ROS# maps them to its primitives)."""
     registry = ros1_registry()
     roots = [s for s in message_types(registry) if s.full_name not in TIME_PRIMITIVES]
     out = tmp_path_factory.mktemp("ours_only_client")
-    return build_ours_only_client(mcs, rossharp_package, registry, roots, out)
+    return build_ours_only_client(
+        mcs, rossharp_package, registry, [*roots, *service_types(registry)], out
+    )

@@ -91,7 +91,11 @@ class EchoProgram:
 
 
 def build_ours_only_client(
-    mcs: str, package: Path, registry: Registry, roots: list[MessageSpec], out: Path
+    mcs: str,
+    package: Path,
+    registry: Registry,
+    roots: Sequence[MessageSpec | ServiceSpec],
+    out: Path,
 ) -> Path:
     """ROS#'s client compiled without its message classes, with ours for ``roots`` and every
     type they use instead (``--include-shipped``)."""

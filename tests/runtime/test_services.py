@@ -1,11 +1,16 @@
 """Every ROS 1 service type Debian ships, and the sample's, both ways through a real rosbridge
 and ROS#'s real client: ROS#'s client calls a rospy server, and a rospy client calls a service
 the C# program advertises through ROS#. Random request and response values cross ROS#'s
-serializer in both directions and are compared field by field (data/service_node.py)."""
+serializer in both directions and are compared field by field (data/service_node.py).
+Twice, as in test_roundtrip.py: with ROS#'s classes for the types it ships (std_srvs, nav_msgs'
+GetMap...) and ours for the rest, and with ours for every type (``--include-shipped``) in a
+client built without ROS#'s classes."""
 
 from __future__ import annotations
 
 from pathlib import Path
+
+import pytest
 
 from tests.runtime.bridge import Bridge
 from tests.runtime.runtime_helpers import (
@@ -16,14 +21,32 @@ from tests.runtime.runtime_helpers import (
 )
 
 
+@pytest.mark.parametrize("include_shipped", [False, True], ids=["rossharp-classes", "ours-only"])
 def test_every_service_type_both_ways(
-    bridge: Bridge, mcs: str, mono: str, rossharp_client: Path, tmp_path: Path
+    bridge: Bridge,
+    mcs: str,
+    mono: str,
+    rossharp_client: Path,
+    ours_only_client: Path,
+    tmp_path: Path,
+    include_shipped: bool,
 ) -> None:
     registry = ros1_registry()
     services = service_types(registry)
-    echo = build_echo(mcs, rossharp_client, registry, [], tmp_path / "Services", services=services)
+    client = ours_only_client if include_shipped else rossharp_client
+    echo = build_echo(
+        mcs,
+        client,
+        registry,
+        [],
+        tmp_path / "Services",
+        services=services,
+        include_shipped=include_shipped,
+    )
     names = [s.full_name for s in services]
-    done = service_round_trip(bridge, mono, echo, names, tmp_path / "run")
+    done = service_round_trip(
+        bridge, mono, echo, names, tmp_path / "run", seed=31 + include_shipped
+    )
     assert set(done.results) == set(names), done.node_output + done.echo_output
     failures = {
         f"{name} {half}": problem

@@ -3,10 +3,11 @@
 ROS#'s default serializer (``SerializerEnum.Microsoft``) is System.Text.Json, whose DLL needs
 System.Memory: Debian's Mono 6.8 does not ship it and no registry reachable here (Debian, PyPI,
 npm) carries it, so it cannot run in these tests. Instead a C# program reflects over every class
-we generate (all ROS 1 message types, --include-shipped) and this test asserts what the
-default contract needs for a faithful round trip: a public parameterless constructor, every ROS
-field as a public read-write instance property named exactly as on the wire (the default has no
-naming policy), and no public instance fields (the default skips fields)."""
+we generate (all ROS 1 message types and both halves of every service, --include-shipped) and
+this test asserts what the default contract needs for a faithful round trip: a public
+parameterless constructor, every ROS field as a public read-write instance property named
+exactly as on the wire (the default has no naming policy), and no public instance fields (the
+default skips fields)."""
 
 from __future__ import annotations
 
@@ -14,8 +15,13 @@ import subprocess
 from pathlib import Path
 
 from tests.runtime.client import CSHARP, mcs_compile
-from tests.runtime.runtime_helpers import TIME_PRIMITIVES, message_types, ros1_registry
-from unityscaffold.codegen import Options, generate
+from tests.runtime.runtime_helpers import (
+    TIME_PRIMITIVES,
+    message_types,
+    ros1_registry,
+    service_types,
+)
+from unityscaffold.codegen import ClassRole, Options, generate
 from unityscaffold.interfaces.model import Dialect
 
 
@@ -37,10 +43,15 @@ def test_every_generated_class_fits_system_text_json_defaults(
         seen[name] = (constructor, properties.split(",") if properties else [], fields)
     registry = ros1_registry()
     specs = [s for s in message_types(registry) if s.full_name not in TIME_PRIMITIVES]
-    code = generate(registry, specs, Options(Dialect.ROS1, include_shipped=True))
+    services = service_types(registry)
+    code = generate(registry, [*specs, *services], Options(Dialect.ROS1, include_shipped=True))
+    classes = [(spec, code.message_class(spec.full_name).full_name) for spec in specs]
+    for service in services:
+        halves = code.classes[f"{service.package}/srv/{service.name}"]
+        classes.append((service.request, halves[ClassRole.REQUEST].full_name))
+        classes.append((service.response, halves[ClassRole.RESPONSE].full_name))
     problems = []
-    for spec in specs:
-        cs_class = code.message_class(spec.full_name).full_name
+    for spec, cs_class in classes:
         constructor, properties, fields = seen[cs_class]
         wire = sorted(f.name for f in spec.fields)
         if constructor != "ctor":
@@ -50,4 +61,4 @@ def test_every_generated_class_fits_system_text_json_defaults(
         if fields:
             problems.append(f"{cs_class}: public fields {fields}")
     assert not problems, "\n".join(problems)
-    assert len(specs) == 161
+    assert (len(specs), len(services)) == (161, 30)
