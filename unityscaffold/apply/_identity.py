@@ -15,11 +15,20 @@ import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import PurePosixPath
+from typing import Protocol
 
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
 from unityscaffold.unity import SceneDocument
 
-__all__ = ["Moved", "Named", "follow_in_manifest", "moved_objects", "now_at", "report_moves"]
+__all__ = [
+    "Moved",
+    "Named",
+    "follow_in_manifest",
+    "followed_notes",
+    "moved_objects",
+    "now_at",
+    "report_moves",
+]
 
 _FOLLOW = "apply --follow-renames"
 
@@ -92,6 +101,27 @@ def report_moves(scene: str, moved: list[Moved]) -> LocatedError:
             )
         )
     return LocatedError(problems)
+
+
+def followed_notes(scenes: Iterable[HasFollowed]) -> list[str]:
+    """One line per GameObject followed to its new path, with the manifest lines rewritten."""
+    notes = []
+    for scene in scenes:
+        groups: dict[tuple[str, str], set[str]] = {}
+        for item in scene.followed:
+            groups.setdefault((item.named.path, item.now), set()).add(_line(item.named.location))
+        for (old, new), lines in groups.items():
+            shown = ", ".join(sorted(lines, key=_line_key))
+            notes.append(
+                f"`{old}` is now `{new}` in {PurePosixPath(scene.relative).name}: followed, "
+                f"and {shown} rewritten"
+            )
+    return notes
+
+
+class HasFollowed(Protocol):
+    relative: str
+    followed: list[Moved]
 
 
 def _line(location: SourceLocation) -> str:

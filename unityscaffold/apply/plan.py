@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._code import CodePlan, plan_code
-from unityscaffold.apply._identity import follow_in_manifest
+from unityscaffold.apply._identity import follow_in_manifest, followed_notes
 from unityscaffold.apply._inside import check_inside
 from unityscaffold.apply._leftovers import plan_leftovers, temp_leftovers_of
 from unityscaffold.apply._lock import (
@@ -159,7 +159,7 @@ def make_plan(
     # Temporary files may sit beside any file apply writes: scenes, settings, generated files.
     beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
     deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside)
-    notes = [*rossharp.notes, *user.notes, *pruning.notes]
+    notes = [*rossharp.notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
     new_lock = LockFile(
         files={
             **pruning.kept_files,
