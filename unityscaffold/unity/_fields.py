@@ -105,10 +105,21 @@ def scalar_value(doc: Doc, key: str) -> str | None:
     return value if isinstance(value, str) else None
 
 
+_CACHE_KEYS: dict[tuple[str, str], str] = {}
+
+
+def _cache_key(kind: str, key: str) -> str:
+    """One string per cache key, shared by every document's cache (not one per document)."""
+    name = _CACHE_KEYS.get((kind, key))
+    if name is None:
+        name = _CACHE_KEYS[kind, key] = kind + key
+    return name
+
+
 def ref_value(doc: Doc, key: str) -> int | None:
     """The fileID of a ``key: {fileID: N}`` (or ``{fileID: N, guid: …}``) field."""
     # cached: the hierarchy and validation read the same links of every document
-    name = "ref " + key
+    name = _cache_key("ref ", key)
     if name in doc.cache:
         return doc.cache[name]  # type: ignore[return-value]
     text = doc.text
@@ -123,13 +134,14 @@ def ref_value(doc: Doc, key: str) -> int | None:
 
 def list_refs(doc: Doc, key: str) -> list[int]:
     """fileIDs in an indentless list: ``- {fileID: N}``, ``- component: {…}`` or ``- 4: {…}``."""
-    cached = cast("tuple[int, ...] | None", doc.cache.get("refs " + key))
+    name = _cache_key("refs ", key)
+    cached = cast("tuple[int, ...] | None", doc.cache.get(name))
     if cached is None:
         text = doc.text
         at = _key_line(text, key)
         block = _ITEMS_AT.match(text, at + 1) if at >= 0 and text[at] == "\n" else None
         found = tuple(int(m) for m in _ITEM_REF_RE.findall(block.group(0))) if block else ()
-        doc.cache["refs " + key] = cached = found
+        doc.cache[name] = cached = found
     return list(cached)
 
 

@@ -81,13 +81,10 @@ def validate_docs(
                 )
             )
         by_id.setdefault(doc.file_id, doc)
-    spelled: set[str] = set()  # as written: int() once per distinct fileID, not per reference
-    for doc in docs:
-        spelled.update(F.LOCAL_REF_RE.findall(doc.text))
-    referenced = {int(m) for m in spelled}
+    del counts
     # reading every reference once is cheap; finding where a dangling one sits is not, so only
     # documents are scanned when something is actually missing
-    if referenced - by_id.keys() - {0}:
+    if _any_dangling(docs, by_id):
         for doc in docs:
             found += _dangling(loc, doc, by_id)
     links = _Links.read(docs)
@@ -99,6 +96,13 @@ def validate_docs(
         if doc.file_id in changed:
             found += _parses(loc, doc)
     return found
+
+
+def _any_dangling(docs: Sequence[Doc], by_id: dict[int, Doc]) -> bool:
+    spelled: set[str] = set()  # as written: int() once per distinct fileID, not per reference
+    for doc in docs:
+        spelled.update(F.LOCAL_REF_RE.findall(doc.text))
+    return bool({int(m) for m in spelled} - by_id.keys() - {0})
 
 
 def _key_at(doc: Doc, offset: int) -> str | None:
