@@ -87,3 +87,14 @@ def test_malformed_structure_is_refused_with_its_line(text: str, message: str) -
 def test_a_missing_file_is_a_user_error(tmp_path: Path) -> None:
     with pytest.raises(UserError, match="cannot read"):
         SceneDocument.load(tmp_path / "nope.unity")
+
+
+def test_a_document_with_no_fields_splits_alike_last_and_before_another() -> None:
+    # Found by the mutated-scene property test: accepted as the last document, refused once
+    # attach had added one after it, so an accepted edit could not be read back.
+    head = "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!29 &1\nOcclusionCullingSettings:\n"
+    more = "--- !u!1 &5\nGameObject:\n  m_Name: a\n"
+    for text, ids in ((head, [1]), (head + more, [1, 5])):
+        scene = SceneDocument.parse(text, "s.unity")
+        assert [d.file_id for d in scene.documents()] == ids
+        assert scene.text() == text

@@ -18,8 +18,10 @@ __all__ = ["Doc", "SplitFile", "split_text"]
 HEADER_RE = re.compile(r"^--- !u!(\d+) &(-?\d+)( stripped)?$", re.M)
 _ANY_HEADER_RE = re.compile(r"^---", re.M)
 _SEPARATOR = "\n--- !u!"
-_HEAD_RE = re.compile(r"(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:\n")
-_DOC_RE = re.compile(r"\n--- !u!(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:\n")
+# The type line's line break is looked at, not taken: a document with no fields ends there,
+# and the next header's leading line break must still be there to be found.
+_HEAD_RE = re.compile(r"(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?:\n|$)")
+_DOC_RE = re.compile(r"\n--- !u!(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?=\n)")
 _REF_ITEMS_RE = re.compile(r"(?:  - \{fileID: -?\d+\}\n)+")
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
