@@ -111,11 +111,23 @@ def test_a_hand_edited_generated_file_stops_apply_until_forced(sample):
     run = run_cli("apply", str(manifest))
     assert run.code == 2
     assert "edited by hand" in run.err and "CmdVelPublisher.cs" in run.err
+    assert "move your code into the matching .User.cs" in run.err
+    assert "message class" not in run.err
     assert "Traceback" not in run.err
     assert snapshot(sample) == before
     forced = run_cli("apply", "--force", str(manifest))
     assert forced.code == 0, forced.err
     assert "Rate <= 0f" in plumbing.read_text()
+
+
+def test_a_hand_edited_message_class_gets_a_hint_that_fits_it(sample):
+    # a message class has no .User.cs half: the hint must not send the user looking for one
+    message = sample / "unity/Assets/RosGenerated/Messages/Diffbot/msg/BaseStatus.cs"
+    message.write_text(message.read_text() + "// mine\n")
+    run = run_cli("apply", str(sample / "robot.yaml"))
+    assert run.code == 2 and "BaseStatus.cs" in run.err
+    hint = run.err.split("hint: ", 1)[1]
+    assert ".User.cs" not in hint and "through its .msg/.srv/.action definition" in hint
 
 
 def test_dry_run_and_plan_write_nothing(sample):

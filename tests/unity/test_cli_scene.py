@@ -169,6 +169,9 @@ def test_dry_run_prints_the_diff_and_writes_nothing(
         ),
         (["-g", "RosSocket", "--guid", CONNECTOR_GUID, "--set", "m_Script=1"], "cannot be set"),
         (["-g", "RosSocket", "--script", "Missing.cs"], "no .meta file"),
+        # the manifest refuses these paths, so the CLI does too
+        (["-g", "/RosSocket", "--guid", CONNECTOR_GUID], "invalid GameObject path '/RosSocket'"),
+        (["-g", "RosSocket/", "--guid", CONNECTOR_GUID], "invalid GameObject path 'RosSocket/'"),
     ],
 )
 def test_user_mistakes_exit_2_with_a_message_and_write_nothing(

@@ -70,8 +70,7 @@ def run(
         listed = "\n  ".join(plan.conflicts)
         raise UserError(
             f"generated files were edited by hand, so apply stopped and wrote nothing:\n  {listed}",
-            hint="move your code into the matching .User.cs file (it is never rewritten), "
-            "or run apply --force to overwrite these files",
+            hint=_conflict_hint(plan),
         )
     # Order matters for a run that is interrupted (Ctrl-C, SIGKILL): the journal (the new
     # lock) is on disk before the first file is replaced, the lock is written after the last
@@ -116,3 +115,17 @@ def _remove(path: Path) -> None:
             f"cannot remove {path}: {exc.strerror}; the other changes were written",
             hint="fix the cause and run apply again to finish the clean-up",
         ) from None
+
+
+def _conflict_hint(plan: Plan) -> str:
+    """What to do instead, for scripts (a user half exists) and message classes (none does)."""
+    scripts = plan.manifest.output + "/Scripts/"
+    ways = []
+    if any(c.startswith(scripts) for c in plan.conflicts):
+        ways.append("move your code into the matching .User.cs file (it is never rewritten)")
+    if any(not c.startswith(scripts) for c in plan.conflicts):
+        ways.append(
+            "change a message class through its .msg/.srv/.action definition (the class is "
+            "regenerated from it), or keep your code in a file of your own"
+        )
+    return "; ".join(ways) + "; or run apply --force to overwrite these files"

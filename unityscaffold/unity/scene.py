@@ -367,9 +367,14 @@ class SceneDocument:
 
 
 def _split_path(path: str) -> list[str]:
-    names = path.strip("/").split("/")
-    if not path.strip("/") or any(not n for n in names):
-        raise UserError(f"invalid GameObject path '{path}'", hint="write it as Parent/Child/Name")
+    # The manifest's rule: a path starts at a root GameObject, so no leading or trailing '/'.
+    names = path.split("/")
+    if any(not n for n in names):
+        raise UserError(
+            f"invalid GameObject path '{path}'",
+            hint="write it as Parent/Child/Name, from a root GameObject, with no empty parts "
+            "and no '/' at either end",
+        )
     return names
 
 
