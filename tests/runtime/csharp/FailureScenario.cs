@@ -43,11 +43,6 @@ public static class FailureScenario
         var working = Connector("Working", args[0], 2);
         var wrongPort = Connector("WrongPort", args[1], 1);
         var notRunning = Connector("NotRunning", args[2], 1);
-        var robot = new GameObject("Robot");
-        robot.AddComponent<GhostSubscriber>(s => s.Connector = working);
-        robot.AddComponent<GhostOutPublisher>(s => s.Connector = working);
-        var haunt = robot.AddComponent<HauntClient>(s => { s.Connector = working; s.ResponseTimeout = 2; });
-        var nobody = robot.AddComponent<NobodyClient>(s => { s.Connector = working; s.ResponseTimeout = 2; });
         new GameObject("Wrong").AddComponent<GhostSubscriber>(s => s.Connector = wrongPort);
         var wrongClient = new GameObject("WrongClient").AddComponent<NobodyClient>(s => s.Connector = wrongPort);
         new GameObject("Absent").AddComponent<GhostSubscriber>(s => s.Connector = notRunning);
@@ -56,6 +51,13 @@ public static class FailureScenario
         {
             Frames(0.1f);
         }
+        // Added once connected, so that the short SecondsTimeout (the subscriber's silence
+        // hint) is not spent on connecting, which can take seconds on a loaded machine.
+        var robot = new GameObject("Robot");
+        robot.AddComponent<GhostSubscriber>(s => s.Connector = working);
+        robot.AddComponent<GhostOutPublisher>(s => s.Connector = working);
+        var haunt = robot.AddComponent<HauntClient>(s => { s.Connector = working; s.ResponseTimeout = 2; });
+        var nobody = robot.AddComponent<NobodyClient>(s => { s.Connector = working; s.ResponseTimeout = 2; });
         haunt.Call(new Ghost.HauntRequest());
         nobody.Call(new Std.TriggerRequest());
         wrongClient.Call(new Std.TriggerRequest());
