@@ -8,8 +8,10 @@ import json
 import re
 from pathlib import Path
 
+import pytest
 from helpers import run_cli
 
+from unityscaffold.manifest.modeline import stale_schema
 from unityscaffold.resources import schema_text
 
 REPO = Path(__file__).resolve().parent.parent.parent
@@ -48,3 +50,48 @@ def test_the_samples_modeline_names_the_shipped_schema() -> None:
     match = MODELINE.match(manifest.read_text(encoding="utf-8"))
     assert match
     assert (manifest.parent / match[1]).read_text(encoding="utf-8") == schema_text()
+
+
+def test_apply_notes_a_schema_copy_that_an_upgrade_left_behind(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    project = tmp_path / "robot"
+    assert run_cli("init", str(project), "--ros", "1").code == 0
+    monkeypatch.chdir(project)
+    fresh = run_cli("apply")
+    assert fresh.code == 0 and "note:" not in fresh.err
+    copy = project / "robot.schema.json"
+    old = json.loads(copy.read_text())
+    del old["properties"]["connector"]  # as if written by an older scaffold
+    copy.write_text(json.dumps(old))
+    stale = run_cli("plan")
+    assert stale.code == 0
+    assert (
+        "note: robot.schema.json (the schema editors check robot.yaml with) is older than "
+        "this scaffold's schema; refresh it with `scaffold schema -o robot.schema.json`"
+    ) in stale.err
+    assert run_cli("apply", "--quiet").err == ""  # quiet stays quiet
+    assert run_cli("schema", "-o", "robot.schema.json").code == 0
+    assert "note:" not in run_cli("apply", "--check").err
+    copy.unlink()
+    assert "robot.schema.json (the schema editors check robot.yaml with) is missing" in (
+        run_cli("plan").err
+    )
+
+
+@pytest.mark.parametrize(
+    ("first_line", "named"),
+    [
+        ("# yaml-language-server: $schema=robot.schema.json\n", "robot.schema.json"),
+        ("\ufeff# yaml-language-server: $schema=../s.json\n", "../s.json"),
+        ("# yaml-language-server: $schema=https://example.org/s.json\n", None),
+        ("version: 1\n", None),
+    ],
+)
+def test_stale_schema_reads_the_first_line_only(
+    tmp_path: Path, first_line: str, named: str | None
+) -> None:
+    manifest = tmp_path / "robot.yaml"
+    manifest.write_text(first_line + "version: 1\n", encoding="utf-8")
+    found = stale_schema(manifest)  # the named file does not exist: stale when local
+    assert found == (None if named is None else tmp_path / named)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import typer
@@ -12,6 +13,7 @@ from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
 from unityscaffold.apply.run import Mode, Outcome, run
 from unityscaffold.cli._options import find_manifest
 from unityscaffold.errors import Exit
+from unityscaffold.manifest.modeline import stale_schema
 
 ManifestArgument: Path | None = typer.Argument(
     None,
@@ -43,6 +45,19 @@ def _show(outcome: Outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
             text = plan_diff(plan)
             if text:
                 typer.echo(text, nl=False)
+
+
+def _schema_note(manifest: Path) -> None:
+    """A note on stderr when the schema copy the manifest's first line names is out of date."""
+    stale = stale_schema(manifest)
+    if stale is not None:
+        shown = stale if stale.is_absolute() else Path(os.path.relpath(stale))
+        state = "is missing" if not stale.exists() else "is older than this scaffold's schema"
+        typer.echo(
+            f"note: {shown} (the schema editors check {manifest} with) {state}; "
+            f"refresh it with `scaffold schema -o {shown}`",
+            err=True,
+        )
 
 
 def _drift_advice(manifest: Path, outcome: Outcome) -> str:
@@ -109,6 +124,8 @@ def register(app: typer.Typer) -> None:
             manifest, mode, force=force, use_environment=ros_env, follow_renames=follow_renames
         )
         _show(outcome, quiet=quiet, as_json=as_json, diff=dry_run)
+        if not quiet and not as_json:
+            _schema_note(manifest)
         if mode is Mode.CHECK and not (outcome.plan.in_sync and not outcome.plan.conflicts):
             if not as_json:
                 # Also under --quiet: a check that fails must say why and what to do.
@@ -134,6 +151,8 @@ def register(app: typer.Typer) -> None:
         manifest = find_manifest(given)
         outcome = run(manifest, Mode.PLAN, use_environment=ros_env)
         _show(outcome, quiet=False, as_json=as_json, diff=True)
+        if not as_json:
+            _schema_note(manifest)
 
     @app.command("init")
     def init_command(
