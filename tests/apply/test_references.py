@@ -220,7 +220,7 @@ def test_each_field_gets_what_its_declared_type_holds(project: Path) -> None:
         (
             '{Reader: "@Nowhere"}',
             "no GameObject named 'Nowhere' at the root",
-            None,
+            "declare it under `objects:`",
         ),
         ('{Tr: "Robot"}', "Tr expects a reference to a Transform (@Path or @Path:Class)", None),
         ("{Chain: 3}", "Chain expects a list of a reference to a Transform", None),

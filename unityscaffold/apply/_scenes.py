@@ -77,6 +77,12 @@ _CREATE_HINT = (
 )
 
 
+_REFERENCE_HINT = (
+    "add it in Unity, or declare it under `objects:` (`- {path: ...}`) and apply creates it "
+    "before it sets references"
+)
+
+
 class _SceneEditor:
     """Applies the desired components to one loaded scene, recording what it did."""
 
@@ -125,7 +131,10 @@ class _SceneEditor:
     def find(self, path: str, where: SourceLocation) -> GameObject:
         """A GameObject a field refers to; recorded too, so that a rename of it is caught."""
         with located_at(where):
-            go = self.doc.find_gameobject(self.path(path))
+            try:
+                go = self.doc.find_gameobject(self.path(path))
+            except GameObjectNotFound as error:
+                raise UserError(error.message, hint=_REFERENCE_HINT) from None
         self.record(go)
         return go
 
