@@ -188,7 +188,10 @@ def test_an_untouched_user_half_follows_a_type_change_and_an_edited_one_gets_a_n
     untouched = (scripts / "OdomSubscriber.User.cs").read_text()
     assert "Geometry.PoseStamped message" in untouched and "Nav.Odometry" not in untouched
     assert "Diffbot.BaseStatus message" in edited.read_text()  # the user's file is theirs
-    assert "BaseStatusSubscriber.User.cs was written for an earlier version" in run.out
+    assert (
+        "BaseStatusSubscriber.User.cs was written for an earlier version of "
+        "BaseStatusSubscriber, which is now generated for topic /base_status;" in run.out
+    )
     second = run_cli("apply", str(manifest))
     assert second.out.endswith("wrote 0 files, removed 0\n")
     assert "written for an earlier version" not in second.out  # said once, when it changed

@@ -74,8 +74,11 @@ def plan_user_files(
         else:
             result.digests[relative] = digest
             if digest != sha256(fresh) and _regenerates(script.path, code):
+                # Says what the class is generated for now, so that after a rename it cannot
+                # read as if the new topic were the earlier version.
                 result.notes.append(
-                    f"{relative} was written for an earlier version of {script.view.class_name} "
-                    f"({script.entry}); check that its methods still match {script.path.name}"
+                    f"{relative} was written for an earlier version of {script.view.class_name}, "
+                    f"which is now generated for {script.entry}; check that its methods still "
+                    f"match {script.path.name}"
                 )
     return result
