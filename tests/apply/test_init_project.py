@@ -5,6 +5,7 @@ leave behind, and for ROS 2 every build target group gets the ``ROS2`` define.""
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -86,3 +87,25 @@ def test_init_force_refuses_to_write_through_a_linked_assets_folder(tmp_path):
     assert "Traceback" not in run.err
     assert list(outside.iterdir()) == []
     assert sorted(p.name for p in project.iterdir()) == ["Assets"]
+
+
+def test_init_force_into_a_project_pins_rossharp_and_adds_no_scene(tmp_path):
+    project = tmp_path / "existing"
+    (project / "Assets" / "Levels").mkdir(parents=True)
+    (project / "Assets" / "Levels" / "Lab.unity").write_text("%YAML 1.1\n")
+    (project / "Packages").mkdir()
+    packages = project / "Packages" / "manifest.json"
+    packages.write_text('{\n  "dependencies": {\n    "com.unity.ugui": "1.0.0"\n  }\n}\n')
+    run = run_cli("init", str(project), "--force")
+    assert run.code == 0, run.err
+    deps = json.loads(packages.read_text())["dependencies"]
+    assert list(deps) == ["com.siemens.ros-sharp", "com.unity.ugui"]
+    assert deps["com.siemens.ros-sharp"].endswith(".git?path=/com.siemens.ros-sharp#2.2.1")
+    assert [p.name for p in project.rglob("*.unity")] == ["Lab.unity"]
+    assert "scene: Assets/Levels/Lab.unity" in (project / "robot.yaml").read_text()
+    # a project that already names ROS# keeps its choice
+    deps["com.siemens.ros-sharp"] = "file:../ros-sharp"
+    packages.write_text(json.dumps({"dependencies": deps}, indent=2) + "\n")
+    before = packages.read_text()
+    assert run_cli("init", str(project), "--force").code == 0
+    assert packages.read_text() == before

@@ -11,6 +11,7 @@ derived from it, so Unity finds ``.meta`` files on first open instead of making 
 from __future__ import annotations
 
 import hashlib
+import json
 from pathlib import Path
 
 from unityscaffold.apply._inside import check_inside
@@ -68,6 +69,44 @@ def _scene_files(salt: str) -> list[tuple[str, bytes]]:
     ]
 
 
+_PACKAGES = "Packages/manifest.json"
+_ROSSHARP = "com.siemens.ros-sharp"
+
+
+def _existing_scenes(directory: Path) -> list[str]:
+    """The scenes a project already has, project-relative and sorted."""
+    assets = directory / "Assets"
+    if not assets.is_dir():
+        return []
+    return sorted(p.relative_to(directory).as_posix() for p in assets.rglob("*.unity"))
+
+
+def _pinned_packages(directory: Path, template: bytes) -> DesiredFile | None:
+    """An existing ``Packages/manifest.json`` with ROS# added, pinned as the template pins it;
+    None when there is none or it already names ROS# (its choice is kept)."""
+    path = directory / _PACKAGES
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return None
+    except (OSError, ValueError) as exc:
+        raise UserError(
+            f"cannot read {path}: {exc}",
+            hint=f"fix it, or add {_ROSSHARP} to its dependencies yourself",
+        ) from None
+    deps = data.get("dependencies") if isinstance(data, dict) else None
+    if not isinstance(deps, dict):
+        raise UserError(
+            f"{path} has no 'dependencies' object", hint="Unity's package manifest needs one"
+        )
+    if _ROSSHARP in deps:
+        return None
+    wanted = json.loads(template)["dependencies"][_ROSSHARP]
+    # Unity keeps dependencies sorted and indents with two spaces: its next save changes nothing
+    data["dependencies"] = dict(sorted({**deps, _ROSSHARP: wanted}.items()))
+    return DesiredFile(path, (json.dumps(data, indent=2, ensure_ascii=False) + "\n").encode())
+
+
 def init_project(directory: Path, ros: int, *, force: bool = False) -> list[FileChange]:
     """Write a template Unity project into ``directory``; refuses a non-empty folder."""
     if directory.exists() and not directory.is_dir():
@@ -84,11 +123,17 @@ def init_project(directory: Path, ros: int, *, force: bool = False) -> list[File
         "product_guid": hashlib.md5(f"unityscaffold-init:{name}".encode()).hexdigest(),
         "rossharp_version": DEFAULT_VERSION,
     }
-    desired = [
-        DesiredFile(directory / rel, data, create_only=True)
-        for rel, data in _template_files(context) + _scene_files(context["product_guid"])
-    ]
-    manifest = starter_manifest(ros, MAIN_SCENE, schema=SCHEMA_FILE)
+    files = _template_files(context)
+    scenes = _existing_scenes(directory)
+    if scenes:  # --force into a project: its scenes are the ones to wire, add none
+        files = [(rel, data) for rel, data in files if not rel.startswith(MAIN_SCENE)]
+    else:
+        files += _scene_files(context["product_guid"])
+    desired = [DesiredFile(directory / rel, data, create_only=True) for rel, data in files]
+    pin = _pinned_packages(directory, dict(files)[_PACKAGES])
+    if pin is not None:
+        desired = [d for d in desired if d.path != pin.path] + [pin]
+    manifest = starter_manifest(ros, scenes[0] if scenes else MAIN_SCENE, schema=SCHEMA_FILE)
     desired.append(
         DesiredFile(directory / "robot.yaml", manifest.encode("utf-8"), create_only=True)
     )

@@ -159,7 +159,10 @@ def register(app: typer.Typer) -> None:
         directory: Path = typer.Argument(..., metavar="DIR", help="Folder for the new project."),
         ros: int = typer.Option(2, "--ros", metavar="1|2", help="ROS version of the robot."),
         force: bool = typer.Option(
-            False, "--force", help="Add the template to a non-empty folder (keeps existing files)."
+            False,
+            "--force",
+            help="Add the template to a non-empty folder (keeps existing files; in an existing "
+            "project, adds ROS# to Packages/manifest.json and uses its first scene).",
         ),
     ) -> None:
         """Create a template Unity project (2022.3, ROS# pinned) with a starter robot.yaml.
