@@ -160,3 +160,24 @@ def test_nothing_found_leaves_the_manifest_as_it_was() -> None:
         starter.replace("ros: 2", "ros: 1"), Discovery(Dialect.ROS1, "x", (), ()), cache_entry="d"
     )
     assert "topics: []" not in edit.text and "services: []" not in edit.text
+
+
+@pytest.mark.parametrize("own_comment", ["", "  # ours"])
+@pytest.mark.parametrize("gap", ["", "\n", "\n# next come topics\n"])
+def test_an_entry_goes_inside_a_list_followed_by_blank_lines_or_comments(
+    own_comment: str, gap: str
+) -> None:
+    # ruamel keeps what follows a list on its last item: appending there put the new entry
+    # after the blank line that ends `interfaces:`, outside the list as a reader sees it
+    text = (
+        f"version: 1\nros: 1\ninterfaces:\n  - ros_ws/src{own_comment}\n{gap}"
+        "topics:\n  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe}\n"
+        f"{gap}services:\n  - {{name: /reset, type: std_srvs/Trigger, role: client}}\n"
+    )
+    edit = edit_manifest(text, FOUND, cache_entry="ros_definitions")
+    assert f"  - ros_ws/src{own_comment}\n  - ros_definitions\n{gap}topics:\n" in edit.text
+    assert "  - {name: /mystery, type: std_msgs/String, gameobject: RosConnector}" in edit.text
+    assert (
+        "gameobject: RosConnector}\n" + gap + "services:\n" in edit.text
+        or "(Unity receives)\n" + gap + "services:\n" in edit.text
+    )

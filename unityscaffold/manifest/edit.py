@@ -20,6 +20,7 @@ from typing import Any
 from ruamel.yaml import YAML
 from ruamel.yaml.comments import CommentedMap, CommentedSeq
 from ruamel.yaml.error import YAMLError
+from ruamel.yaml.tokens import CommentToken
 
 from unityscaffold.errors import LocatedError, SourceLocation, UserError
 from unityscaffold.interfaces.live.model import (
@@ -189,7 +190,7 @@ def _add_topics(
             skipped.append(topic.name)
             continue
         entry = _entry(_topic_pairs(topic), seq)
-        seq.append(entry)
+        _append(seq, entry)
         if topic.direction is Direction.UNKNOWN:
             # A flow map takes the comment at the end of its line; a block map on its first key.
             if entry.fa.flow_style():
@@ -209,9 +210,33 @@ def _add_services(
         if service.name in listed:
             skipped.append(service.name)
             continue
-        seq.append(_entry(_service_pairs(service), seq))
+        _append(seq, _entry(_service_pairs(service), seq))
         added.append(service.name)
     return added, skipped
+
+
+def _append(seq: CommentedSeq, value: Any) -> None:
+    """Append ``value`` inside the list, before what follows its last item.
+
+    ruamel keeps the blank lines and comments after a list on its last item, with that item's
+    own end-of-line comment (``# ours\n\n``): a plain append would leave them between the old
+    last item and the new one. The item keeps its first line; the rest moves to ``value``.
+    """
+    last = len(seq) - 1
+    trailer = seq.ca.items.get(last) if last >= 0 else None
+    seq.append(value)
+    token = trailer[0] if trailer else None
+    if token is None:
+        return
+    if not token.value.startswith("#"):  # no comment of its own: all of it follows the list
+        del seq.ca.items[last]
+        seq.ca.items[len(seq) - 1] = trailer
+        return
+    own, _, rest = token.value.partition("\n")
+    if rest:
+        token.value = own + "\n"
+        moved = CommentToken("\n" + rest, token.start_mark, None)
+        seq.ca.items[len(seq) - 1] = [moved, None, None, None]
 
 
 def _add_interface(document: CommentedMap, cache_entry: str, path: str) -> str | None:
@@ -219,7 +244,7 @@ def _add_interface(document: CommentedMap, cache_entry: str, path: str) -> str |
     wanted = os.path.normpath(cache_entry)
     if any(isinstance(f, str) and os.path.normpath(f) == wanted for f in folders):
         return None
-    folders.append(cache_entry)
+    _append(folders, cache_entry)
     return cache_entry
 
 
