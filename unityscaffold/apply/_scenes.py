@@ -20,6 +20,7 @@ from unityscaffold.apply._facts import ScriptFacts
 from unityscaffold.apply._identity import Moved, Named, moved_objects, now_at, report_moves
 from unityscaffold.apply._lock import LockComponent, LockFile
 from unityscaffold.apply._objects import Hooks, declare_objects
+from unityscaffold.apply._references import fits, paths_in, typed_reference, untyped_value
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._typed import check_names, typed_value
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
@@ -30,7 +31,6 @@ from unityscaffold.manifest.model import (
     ObjectPath,
     SceneObject,
     Service,
-    StructValue,
     Topic,
 )
 from unityscaffold.unity import (
@@ -48,9 +48,6 @@ from unityscaffold.unity.ugui import UGUI_SCRIPTS, ugui_class, ugui_script
 from unityscaffold.unity.values import FieldValue
 
 __all__ = ["ScenePlan", "plan_scenes"]
-
-_TRANSFORM_CLASS_ID = 4
-_RECT_TRANSFORM_CLASS_ID = 224
 
 
 @dataclass(slots=True)
@@ -316,104 +313,6 @@ def _component_script(ctx: _Context, item: Component) -> ScriptRef:
     return found
 
 
-def _reference(
-    ctx: _Context, editor: _SceneEditor, name: str, value: ObjectPath, where: SourceLocation
-) -> ObjectRef:
-    doc = editor.doc
-    go = editor.find(value.path, where)
-    wanted = value.component or ("Transform" if name.lower().endswith("transform") else None)
-    if wanted is None:
-        return ObjectRef(go.file_id)
-    for comp in doc.components_of(go):
-        script_name = ctx.class_of(comp.script.guid) if comp.script else None
-        if wanted in (comp.type_name, script_name) or (
-            wanted == "Transform" and comp.class_id == _TRANSFORM_CLASS_ID
-        ):
-            return ObjectRef(comp.file_id)
-    raise LocatedError.at(
-        where,
-        f"{value.path} has no {wanted} component",
-        hint="components there: " + ", ".join(c.type_name for c in doc.components_of(go)),
-    )
-
-
-def _value(
-    ctx: _Context, editor: _SceneEditor, name: str, value: object, where: SourceLocation
-) -> FieldValue:
-    if isinstance(value, ObjectPath):
-        return _reference(ctx, editor, name, value, where)
-    if isinstance(value, StructValue):
-        return {k: _value(ctx, editor, k, v, where) for k, v in value.items}
-    if isinstance(value, tuple):
-        return [_value(ctx, editor, name, v, where) for v in value]
-    return value  # type: ignore[return-value]
-
-
-# Unity's abstract component classes and the built-in classes a field of that type accepts.
-_UNITY_BASES: dict[str, frozenset[str]] = {
-    "Collider": frozenset({"BoxCollider", "SphereCollider", "CapsuleCollider", "MeshCollider"}),
-    "Joint": frozenset(
-        {"HingeJoint", "FixedJoint", "SpringJoint", "CharacterJoint", "ConfigurableJoint"}
-    ),
-    "Renderer": frozenset({"MeshRenderer", "SkinnedMeshRenderer", "LineRenderer"}),
-}
-
-
-def _fits(ctx: _Context, comp: SceneComponent, wanted: str) -> bool:
-    """Whether a component can stand in a field declared as class ``wanted``."""
-    if wanted in ("Transform", "Component"):
-        return comp.class_id in (_TRANSFORM_CLASS_ID, _RECT_TRANSFORM_CLASS_ID) or (
-            wanted == "Component"
-        )
-    if wanted == "RectTransform":
-        return comp.class_id == _RECT_TRANSFORM_CLASS_ID
-    if comp.script is None:
-        return comp.type_name == wanted or comp.type_name in _UNITY_BASES.get(wanted, ())
-    if wanted in ("MonoBehaviour", "Behaviour"):
-        return True
-    name = ctx.class_of(comp.script.guid)
-    if name == wanted:
-        return True
-    facts = ctx.facts(comp.script)
-    return facts is not None and wanted in facts.bases
-
-
-def _typed_reference(
-    ctx: _Context, editor: _SceneEditor, value: ObjectPath, declared: str, where: SourceLocation
-) -> ObjectRef:
-    """``@Path`` (or ``@Path:Class``) for a field declared as ``declared``: the GameObject, its
-    transform, or the one component on it that fits."""
-    wanted = declared.rsplit(".", 1)[-1]
-    doc = editor.doc
-    go = editor.find(value.path, where)
-    if wanted == "GameObject" and value.component is None:
-        return ObjectRef(go.file_id)
-    comps = doc.components_of(go)
-    fits = [c for c in comps if _fits(ctx, c, wanted)]
-    if value.component is not None:
-        fits = [c for c in fits if value.component in (c.type_name, _label(ctx, c))]
-    if len(fits) == 1:
-        return ObjectRef(fits[0].file_id)
-    there = ", ".join(_label(ctx, c) for c in comps) or "nothing"
-    if not fits:
-        chosen = f" named {value.component}" if value.component else ""
-        raise LocatedError.at(
-            where,
-            f"{value.path} has no {wanted}{chosen} for this field (a {wanted} field)",
-            hint=f"components there: {there}",
-        )
-    raise LocatedError.at(
-        where,
-        f"{value.path} has {len(fits)} components that fit this {wanted} field: "
-        + ", ".join(_label(ctx, c) for c in fits),
-        hint=f"choose one with @{value.path}:<Class>",
-    )
-
-
-def _label(ctx: _Context, comp: SceneComponent) -> str:
-    return (ctx.class_of(comp.script.guid) if comp.script else None) or comp.type_name
-
-
 def _catalog_values(
     ctx: _Context, editor: _SceneEditor, facts: CatalogScript, entry: Component, references: bool
 ) -> list[tuple[str, FieldValue]]:
@@ -428,16 +327,16 @@ def _catalog_values(
     for item in entry.fields:
         kind = kinds[item.name]
         if kind.startswith("raw:"):
-            if references or not any(True for _ in _paths_in(item.value)):
+            if references or not any(True for _ in paths_in(item.value)):
                 values.append(
-                    (item.name, _value(ctx, editor, item.name, item.value, item.location))
+                    (item.name, untyped_value(ctx, editor, item.name, item.value, item.location))
                 )
             continue
         if "ref:" in kind and not references:
             continue
 
         def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
-            return _typed_reference(ctx, editor, path, declared, where)
+            return typed_reference(ctx, editor, path, declared, where)
 
         values.append(
             (item.name, typed_value(kind, item.value, item.location, item.name, enums, resolve))
@@ -452,7 +351,7 @@ def _requirements(
     go = editor.doc.find_gameobject(editor.path(entry.gameobject))
     comps = editor.doc.components_of(go)
     for required in facts.requires:
-        if required == "RosConnector" or any(_fits(ctx, c, required) for c in comps):
+        if required == "RosConnector" or any(fits(ctx, c, required) for c in comps):
             continue
         editor.plan.edits.append(
             f"note: {facts.class_name} on {entry.gameobject} requires a {required} there "
@@ -474,26 +373,15 @@ def _named(ctx: _Context, scene: str) -> list[Named]:
             continue
         found.append(Named(entry.gameobject, entry.locations.of("gameobject")))
         for item in entry.fields:
-            found += [Named(p, item.location, True) for p in _paths_in(item.value)]
+            found += [Named(p, item.location, True) for p in paths_in(item.value)]
     for obj in m.objects:
         if obj.scene != scene:
             continue
         found.append(Named(obj.path, obj.locations.of("path")))
         for comp in obj.components:
             for item in comp.fields:
-                found += [Named(p, item.location, True) for p in _paths_in(item.value)]
+                found += [Named(p, item.location, True) for p in paths_in(item.value)]
     return found
-
-
-def _paths_in(value: object) -> Iterable[str]:
-    if isinstance(value, ObjectPath):
-        yield value.path
-    elif isinstance(value, StructValue):
-        for _, item in value.items:
-            yield from _paths_in(item)
-    elif isinstance(value, tuple):
-        for item in value:
-            yield from _paths_in(item)
 
 
 def _follow(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> dict[str, str]:
@@ -540,7 +428,7 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
     if objects:
 
         def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
-            return _typed_reference(ctx, editor, path, declared, where)
+            return typed_reference(ctx, editor, path, declared, where)
 
         hooks = Hooks(editor.path, editor.record, resolve)
         declare_objects(doc, objects, m.project_root, plan.edits, hooks)
@@ -606,7 +494,8 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             )
         if facts is None:
             values = [
-                (f.name, _value(ctx, editor, f.name, f.value, f.location)) for f in entry.fields
+                (f.name, untyped_value(ctx, editor, f.name, f.value, f.location))
+                for f in entry.fields
             ]
         else:
             # References are set once every component is there: a field may name one that a
