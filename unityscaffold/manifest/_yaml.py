@@ -237,7 +237,8 @@ class _Converter:
             return YScalar(str(node.value), self.loc(node))
         try:
             value = self._yaml.constructor.construct_object(node, deep=True)
-        except (YAMLError, ValueError, TypeError, KeyError):
+        # ruamel's constructors raise plain Python errors on odd text (IndexError: an empty !!int).
+        except (YAMLError, ValueError, TypeError, KeyError, IndexError):
             kind = tag.removeprefix(_CORE)
             form = _TAGGED_FORMS.get(kind)
             raise self.fail(
