@@ -195,3 +195,32 @@ def test_an_untouched_user_half_follows_a_type_change_and_an_edited_one_gets_a_n
     second = run_cli("apply", str(manifest))
     assert second.out.endswith("wrote 0 files, removed 0\n")
     assert "written for an earlier version" not in second.out  # said once, when it changed
+
+
+def test_a_connector_chosen_in_unity_for_a_script_is_kept(sample):
+    # a scene with two RosConnectors: the user points /odom's script at the second one
+    scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    connector_guid = "ff98778ae051cfd40a6e4effdf851ebd"
+    second = run_cli(
+        "scene", "attach", str(scene), "-g", "Second", "--create", "--guid", connector_guid
+    )
+    assert second.code == 0, second.err
+    odom = sample / "unity" / "Assets" / "RosGenerated" / "Scripts" / "OdomSubscriber.cs"
+    chosen = run_cli(
+        "scene",
+        "attach",
+        str(scene),
+        "-g",
+        "Robot",
+        "--script",
+        str(odom),
+        "--set",
+        "Connector=@Second:RosConnector",
+    )
+    assert chosen.code == 0, chosen.err
+    picked = scene.read_text()
+    manifest = str(sample / "robot.yaml")
+    run = run_cli("apply", manifest)
+    assert run.code == 0, run.err
+    assert scene.read_text() == picked  # was: Connector reset to the manifest's connector
+    assert run_cli("apply", "--check", manifest).code == 0

@@ -233,6 +233,37 @@ def _added_here(edits: list[str], name: str, path: str) -> bool:
     )
 
 
+def _hand_set_connector(
+    doc: SceneDocument,
+    path: str,
+    script: ScriptRef,
+    connector: ScriptRef | None,
+    recorded: set[int],
+) -> int:
+    """The RosConnector a generated script's ``Connector`` was pointed at in Unity, to keep:
+    a scene with two connectors (two robots, say) chooses per script. 0 when there is no such
+    choice (no component yet, an empty field, a field that is not a RosConnector, or one apply
+    attached itself, which follows the manifest's ``connector``)."""
+    if connector is None:
+        return 0
+    try:
+        go = doc.find_gameobject(path)
+    except UserError:
+        return 0
+    component = doc.find_component(go, script.guid, script.file_id)
+    value = doc.field(component, "Connector") if component is not None else None
+    target = value.get("fileID") if isinstance(value, dict) else None
+    if not isinstance(target, str) or not target.lstrip("-").isdigit() or target == "0":
+        return 0
+    other = doc.document(int(target))
+    if other is None or other.class_id != 114:
+        return 0
+    found = doc.component(int(target)).script
+    if found is None or found.guid != connector.guid or int(target) in recorded:
+        return 0
+    return int(target)
+
+
 def _connector_fields(manifest: Manifest) -> list[tuple[str, FieldValue]]:
     c = manifest.connector
     return [
@@ -447,6 +478,8 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
         connector_id = editor.attach(
             m.connector.gameobject, True, connector_script, _connector_fields(m), where, "connector"
         ).file_id
+    # connectors apply attached itself may be pruned; one that is not came from the user
+    owned_ids = {c.file_id for c in lock.components if c.scene == plan.relative}
     for script in ctx.code.scripts:
         item = script.item
         if item.scene != plan.relative:
@@ -456,13 +489,14 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
                 f"note: {script.view.class_name}'s Connector stays empty (the "
                 "RosConnector is in another scene); it finds one at runtime"
             )
-        fields: list[tuple[str, FieldValue]] = [
-            ("Connector", ObjectRef(connector_id)),
-            *script.view.serialized_fields(),
-        ]
         ref = ScriptRef(
             script.guid, class_name=script.view.class_name, namespace=script.view.namespace
         )
+        chosen = _hand_set_connector(doc, item.gameobject, ref, connector_script, owned_ids)
+        fields: list[tuple[str, FieldValue]] = [
+            ("Connector", ObjectRef(chosen or connector_id)),
+            *script.view.serialized_fields(),
+        ]
         editor.attach(
             item.gameobject,
             item.create,
