@@ -224,3 +224,34 @@ def test_a_connector_chosen_in_unity_for_a_script_is_kept(sample):
     assert run.code == 0, run.err
     assert scene.read_text() == picked  # was: Connector reset to the manifest's connector
     assert run_cli("apply", "--check", manifest).code == 0
+
+
+def test_gameobjects_apply_made_go_with_their_entry_unless_something_else_is_on_them(sample):
+    manifest = sample / "robot.yaml"
+    scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    original_manifest, original_scene = manifest.read_text(), scene.read_bytes()
+    entries = "".join(
+        f"  - {{name: /{n.lower()}, type: sensor_msgs/{t}, direction: subscribe, "
+        f"gameobject: Robot/Sensors/{n}}}\n"
+        for n, t in (("Imu", "Imu"), ("Temp", "Temperature"))
+    )
+    manifest.write_text(original_manifest.replace("\nservices:", entries + "\nservices:"))
+    assert run_cli("apply", str(manifest)).code == 0
+    # the user puts a component of their own on Temp: that GameObject is theirs now
+    user_script = "0123456789abcdef0123456789abcdef"
+    added = run_cli(
+        "scene", "attach", str(scene), "-g", "Robot/Sensors/Temp", "--guid", user_script
+    )
+    assert added.code == 0, added.err
+    manifest.write_text(original_manifest)
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.err
+    assert "remove GameObject Robot/Sensors/Imu (apply made it; nothing else is on it)" in run.out
+    assert "remove GameObject Robot/Sensors/Temp" not in run.out
+    assert "remove GameObject Robot/Sensors " not in run.out  # Temp is still under it
+    text = scene.read_text()
+    assert "m_Name: Imu\n" not in text and "m_Name: Temp\n" in text and user_script in text
+    assert run_cli("apply", "--check", str(manifest)).code == 0
+    # once the user's component goes, nothing brings the objects back or removes them: not ours
+    scene.write_bytes(original_scene)
+    assert run_cli("apply", "--check", str(manifest)).code == 0

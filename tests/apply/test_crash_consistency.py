@@ -38,7 +38,7 @@ from unityscaffold.cli import main
 sys.exit(main(sys.argv[3:]))
 """
 ADDED = (
-    "  - {name: /imu, type: sensor_msgs/Imu, direction: subscribe, gameobject: Robot}\n"
+    "  - {name: /imu, type: sensor_msgs/Imu, direction: subscribe, gameobject: Robot/Imu}\n"
     "  - {name: /joint_states, type: sensor_msgs/JointState, direction: subscribe,"
     " gameobject: Robot}\n"
 )
@@ -109,6 +109,8 @@ def test_going_back_after_a_killed_apply_neither_blames_hand_edits_nor_keeps_its
     manifest = sample / "robot.yaml"
     original = manifest.read_text()
     before = snapshot(sample / "unity" / "Assets" / "RosGenerated")
+    scene_path = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    original_scene = scene_path.read_bytes()
     manifest.write_text(_bigger(manifest))
     _killed_apply(tmp_path, manifest, operation, k)
     manifest.write_text(original)
@@ -119,6 +121,7 @@ def test_going_back_after_a_killed_apply_neither_blames_hand_edits_nor_keeps_its
     scene = (sample / "unity" / "Assets" / "Scenes" / "Main.unity").read_text()
     assert "Topic: /imu" not in scene and "Topic: /joint_states" not in scene
     assert "ServiceName: /stop" not in scene
+    assert scene_path.read_bytes() == original_scene  # the GameObjects it made go too
 
 
 def test_check_notices_a_temporary_file_left_by_a_dead_writer_and_apply_removes_it(

@@ -558,6 +558,21 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
         )
         _requirements(editor, ctx, facts, entry)
     editor.prune(lock.components, editor.wanted)
+    _prune_gameobjects(plan, doc, lock)
+
+
+def _prune_gameobjects(plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
+    """GameObjects apply made for entries the manifest no longer has, once nothing is on
+    them: deepest first, so that a parent it made emptied by this goes too. Anything a user
+    added (a component, a child, a reference) keeps it, and so does one Unity made."""
+    kept = set(plan.gameobjects.values())
+    recorded = lock.gameobjects_in(plan.relative)
+    for path in sorted(recorded, key=lambda p: (-p.count("/"), p)):
+        file_id = recorded[path]
+        if path in plan.gameobjects or file_id in kept or doc.document(file_id) is None:
+            continue
+        if doc.remove_made_gameobject(file_id, path):
+            plan.edits.append(f"remove GameObject {path} (apply made it; nothing else is on it)")
 
 
 def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocument:

@@ -296,3 +296,34 @@ def remove_component(docs: Documents, file_id: int) -> bool:
             T.set_text(other, other.text.replace(needle, "{fileID: 0}"))
             docs.touch(other)
     return True
+
+
+def remove_empty_gameobject(docs: Documents, go_id: int) -> bool:
+    """Remove a GameObject that holds only its Transform, has no children, and that nothing
+    else in the file refers to; False (nothing changed) otherwise."""
+    go = docs.get(go_id)
+    if go is None or go.class_id != 1 or go.stripped:
+        return False
+    components = F.list_refs(go, "m_Component")
+    transform = docs.get(components[0]) if len(components) == 1 else None
+    if transform is None or transform.class_id not in TRANSFORM_CLASSES:
+        return False
+    if F.list_refs(transform, "m_Children"):
+        return False
+    father = docs.get(F.ref_value(transform, "m_Father") or 0)
+    roots = next((d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS), None)
+    holders = {go.file_id, transform.file_id}
+    allowed = {id(go), id(transform), id(father), id(roots)}
+    for other in docs.in_order:
+        if id(other) in allowed:
+            continue
+        if any(f"{{fileID: {i}}}" in other.text for i in holders):
+            return False  # something else uses it: not apply's to take away
+    if father is not None and T.remove_list_item(father, "m_Children", transform.file_id):
+        docs.touch(father)
+    if roots is not None and T.remove_list_item(roots, "m_Roots", transform.file_id):
+        docs.touch(roots)
+    docs.remove(transform)
+    docs.remove(go)
+    docs.invalidate()
+    return True

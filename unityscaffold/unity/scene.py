@@ -8,6 +8,7 @@ GameObject + script, and fileIDs of new objects derive from stable names.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import cast
@@ -18,6 +19,7 @@ from unityscaffold.unity import _declared, _edits
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
+from unityscaffold.unity._fileids import candidate_file_ids
 from unityscaffold.unity._split import Doc, split_text
 from unityscaffold.unity._validate import validate_docs
 from unityscaffold.unity.builtins import BuiltinClass
@@ -298,6 +300,15 @@ class SceneDocument:
         """Remove a component; references to it elsewhere in the file become ``{fileID: 0}``."""
         file_id = component if isinstance(component, int) else component.file_id
         return _edits.remove_component(self._docs, file_id)
+
+    def remove_made_gameobject(self, file_id: int, path: str) -> bool:
+        """Remove the GameObject ``file_id`` if an edit made it at ``path`` (its fileID is the
+        one derived from that path, which Unity never picks), only its Transform is on it, it
+        has no children and nothing in the file refers to it; return whether it was removed."""
+        made = itertools.islice(candidate_file_ids(("GameObject", path)), 8)
+        if file_id not in set(made):
+            return False
+        return _edits.remove_empty_gameobject(self._docs, file_id)
 
     # ----- lookups ------------------------------------------------------------------------------
 
