@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import pytest
@@ -10,20 +9,15 @@ from unityparser import UnityDocument
 
 from unityscaffold.unity.scene import SceneDocument
 
+# Real scenes and prefabs copied from public projects (tests/data/unity/ATTRIBUTION.md).
 DATA = Path(__file__).resolve().parents[1] / "data" / "unity"
-# The shared corpus may hold more files than our copies; use them too when it is present.
-SHARED = Path(__file__).resolve().parents[3] / "shared" / "corpus" / "unity"
 
 
 def corpus_files() -> list[Path]:
-    found = {p.relative_to(DATA).as_posix(): p for p in DATA.rglob("*") if _is_unity(p)}
-    if SHARED.is_dir():
-        for path in SHARED.rglob("*"):
-            if _is_unity(path):
-                found.setdefault(path.relative_to(SHARED).as_posix(), path)
-    if not found and os.environ.get("CI") == "true":
-        raise RuntimeError("no Unity corpus files found")
-    return [found[key] for key in sorted(found)]
+    found = sorted(p for p in DATA.rglob("*") if _is_unity(p))
+    if not found:
+        raise RuntimeError(f"no Unity files under {DATA}")
+    return found
 
 
 def _is_unity(path: Path) -> bool:

@@ -1,9 +1,9 @@
 """Property: real scenes, mutated at random, are edited cleanly or refused cleanly.
 
-Each example takes a real Unity file (``tests/data`` and, when present, the shared corpus; see
-``conftest.corpus_files``), mutates its lines (drop, duplicate, move, point one ``{fileID}`` at
-another object of the file, which makes dangling links and cycles, cut the file short, garble
-a line) and runs ``scene ls`` and ``scene attach --create`` through the real entry point:
+Each example takes a real Unity file (``tests/data/unity``, see ``conftest.corpus_files``), mutates
+its lines (drop, duplicate, move, point one ``{fileID}`` at another object of the file, which makes
+dangling links and cycles, cut the file short, garble a line) and runs ``scene ls`` and ``scene
+attach --create`` through the real entry point:
 
 - the exit status is 0 or 2, never 3 (an internal error), and no traceback is printed;
 - each command ends within a bound (a walk of a corrupt hierarchy must end);
