@@ -1,9 +1,10 @@
 """The committed list of ROS#'s own message classes is exactly what its generator derives.
 
 ``unityscaffold/codegen/_shipped_data.py`` is written by ``scripts/update_shipped_classes.py``
-from ROS#'s Unity package. This runs the script on a ROS# 2.2.1 checkout, found through
-``UNITYSCAFFOLD_ROSSHARP`` or at ``../shared/vendor/ros-sharp/2.2.1/com.siemens.ros-sharp``
-beside the repository, and compares its output with the committed module byte for byte.
+from ROS#'s Unity package. This runs the script on a checkout of ROS# 2.2.1's
+``com.siemens.ros-sharp`` (github.com/siemens/ros-sharp, tag 2.2.1), found through
+``UNITYSCAFFOLD_ROSSHARP`` or beside the repository where CI puts it, and compares its output
+with the committed module byte for byte.
 """
 
 from __future__ import annotations

@@ -1,8 +1,9 @@
 """A real rosbridge for ROS 1 for the runtime tests: rosmaster, rosbridge_websocket and rosapi_node
 from rosbridge_suite's sources, all on loopback, all started by us and stopped by process id.
 
-rosbridge_suite is not packaged by Debian; its unmodified ROS 1 sources are found through
-``UNITYSCAFFOLD_ROSBRIDGE`` or ``../shared/vendor/rosbridge_suite-ros1`` beside the checkout. The
+rosbridge_suite is not packaged by Debian; its unmodified ROS 1 sources (a checkout of
+github.com/RobotWebTools/rosbridge_suite, branch ``ros1``) are found through
+``UNITYSCAFFOLD_ROSBRIDGE`` or beside the repository where CI puts it. The
 Python modules of its own messages and services (and of ``rosauth``'s one service, which
 rosbridge_server imports) are generated here with genpy into the copied packages, as catkin's
 devel space would place them.
@@ -31,7 +32,7 @@ ROS1_SHARE = Path("/usr/share")
 
 
 def vendor_folder(variable: str, name: str) -> Path | None:
-    """A third-party source tree the tests use: ``$variable``, else ``../shared/vendor/name``."""
+    """A third-party checkout the tests use: ``$variable``, else beside the repo (as in CI)."""
     if os.environ.get(variable):
         return Path(os.environ[variable])
     candidate = REPO.parent / "shared" / "vendor" / name

@@ -1,8 +1,9 @@
 """ROS#'s real client library (RosBridgeClient, pure C#) compiled with Mono's mcs for the runtime
 tests, and test programs built on it.
 
-The sources are ROS# 2.2.1's unmodified ``Runtime/Libraries/RosBridgeClient`` from
-``UNITYSCAFFOLD_ROSSHARP`` or ``../shared/vendor/ros-sharp/2.2.1/com.siemens.ros-sharp``, with
+The sources are ROS# 2.2.1's unmodified ``Runtime/Libraries/RosBridgeClient`` (github.com/
+siemens/ros-sharp, tag 2.2.1), from ``UNITYSCAFFOLD_ROSSHARP`` or beside the repository where CI
+puts it, with
 three exclusions: ``UrdfTransfer/`` (needs a newer C# and is not part of messaging),
 ``MessageTypes/ROS2/`` (these tests speak ROS 1), and ``Serializers/MicrosoftSerializer.cs``,
 replaced by ``csharp/MicrosoftSerializerUnavailable.cs`` because System.Text.Json needs
