@@ -35,6 +35,17 @@ def test_apply_check_finds_the_manifest_in_a_folder_above(
     assert "run `scaffold apply ../../robot.yaml`" in drift.err
 
 
+def test_files_of_a_manifest_found_above_are_named_from_the_project(
+    project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (project / "robot.lock.json").unlink()
+    monkeypatch.chdir(project / "Assets")
+    run = run_cli("plan")
+    assert run.code == 0, run.err
+    assert "  create  robot.lock.json\n" in run.out
+    assert ".." not in run.out.split("\n---", 1)[0]
+
+
 def test_the_search_stops_at_the_repository_root(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -6,6 +6,7 @@ changes and scene edits; nothing is written here (see ``apply.run``).
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -69,9 +70,12 @@ class Plan:
 
     def relative(self, path: Path) -> str:
         """``path`` for people: inside the project relative to it, else to the manifest."""
+        # A manifest named from a subfolder (../robot.yaml) keeps its '..' in the planned
+        # paths; folded here, the lock beside it reads robot.lock.json, not Assets/../...
+        path = Path(os.path.normpath(path))
         for base in (self.manifest.project_root, self.manifest.path.parent):
             try:
-                return path.relative_to(base).as_posix()
+                return path.relative_to(Path(os.path.normpath(base))).as_posix()
             except ValueError:
                 continue
         return str(path)
