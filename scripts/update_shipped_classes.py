@@ -33,6 +33,7 @@ _NAMESPACE_RE = re.compile(rf"^namespace {re.escape(NAMESPACE_ROOT)}\.(\w+)\s*$"
 _CLASS_RE = re.compile(r"^\s*public class (\w+)\b", re.M)
 _ROS_NAME_RE = re.compile(r'^\s*public const string RosMessageName = "([^"]+)";', re.M)
 _GUARD_RE = re.compile(r"^#if (!?)ROS2\s*$", re.M)
+_PROPERTY_RE = re.compile(r"^\s*public [\w.\[\]<>, ]+? (\w+) \{ get; set; \}", re.M)
 
 HEADER = '''\
 """Message classes ROS# {tag} ships, as data. Generated: do not edit by hand.
@@ -51,6 +52,12 @@ from __future__ import annotations
 SHIPPED: dict[int, dict[str, tuple[str, ...]]] = {{
 '''
 FOOTER = "}\n# fmt: on\n"
+FIELDS_HEADER = """
+#: Per ROS version: ``namespace/Class`` -> its serialized fields in order, to tell when a
+#: distro's definition has fields ROS#'s class lacks (or the other way round).
+# fmt: off
+FIELDS: dict[int, dict[str, tuple[str, ...]]] = {
+"""
 
 
 class SourceError(Exception):
@@ -62,6 +69,11 @@ def _one(pattern: re.Pattern[str], text: str, what: str, path: Path) -> re.Match
     if len(found) != 1:
         raise SourceError(f"{path}: expected one {what}, found {len(found)}")
     return found[0]
+
+
+def read_fields(path: Path) -> list[str]:
+    """The serialized fields of one ROS# message class, in declaration order."""
+    return _PROPERTY_RE.findall(path.read_text(encoding="utf-8-sig"))
 
 
 def read_entry(path: Path, version: int) -> tuple[str, str]:
@@ -78,8 +90,11 @@ def read_entry(path: Path, version: int) -> tuple[str, str]:
     return namespace, f"{ros_name}>{class_name}"
 
 
-def shipped_classes(package: Path) -> dict[int, dict[str, list[str]]]:
-    """Per ROS version, namespace segment -> sorted entries."""
+def shipped_classes(
+    package: Path, fields: dict[int, dict[str, list[str]]] | None = None
+) -> dict[int, dict[str, list[str]]]:
+    """Per ROS version, namespace segment -> sorted entries; ``fields`` gets, per ROS version,
+    ``namespace/Class`` -> the class's serialized fields."""
     table: dict[int, dict[str, list[str]]] = {}
     for version in (1, 2):
         folder = package / MESSAGE_TYPES / f"ROS{version}"
@@ -90,6 +105,9 @@ def shipped_classes(package: Path) -> dict[int, dict[str, list[str]]]:
         for path in files:
             namespace, entry = read_entry(path, version)
             by_namespace[namespace].append(entry)
+            if fields is not None:
+                name = entry.partition(">")[2] or entry.rsplit("/", 1)[-1]
+                fields.setdefault(version, {})[f"{namespace}/{name}"] = read_fields(path)
         table[version] = {ns: sorted(entries) for ns, entries in sorted(by_namespace.items())}
     return table
 
@@ -109,7 +127,11 @@ def _packed(entries: list[str], indent: str) -> list[str]:
     return lines
 
 
-def render(table: dict[int, dict[str, list[str]]], tag: str) -> str:
+def render(
+    table: dict[int, dict[str, list[str]]],
+    tag: str,
+    fields: dict[int, dict[str, list[str]]] | None = None,
+) -> str:
     """The text of ``_shipped_data.py``."""
     out = [HEADER.format(tag=tag, folder=MESSAGE_TYPES.as_posix(), root=NAMESPACE_ROOT)]
     for version, namespaces in table.items():
@@ -117,6 +139,20 @@ def render(table: dict[int, dict[str, list[str]]], tag: str) -> str:
         for namespace, entries in namespaces.items():
             out.append(f'        "{namespace}": (\n')
             out += [line + "\n" for line in _packed(entries, " " * 12)]
+            out.append("        ),\n")
+        out.append("    },\n")
+    out.append(FOOTER)
+    out.append(FIELDS_HEADER)
+    for version, classes in sorted((fields or {}).items()):
+        out.append(f"    {version}: {{\n")
+        for name, names in sorted(classes.items()):
+            quoted = ", ".join(f'"{n}"' for n in names) + ("," if len(names) == 1 else "")
+            one_line = f'        "{name}": ({quoted}),'
+            if len(one_line) <= WIDTH:
+                out.append(one_line + "\n")
+                continue
+            out.append(f'        "{name}": (\n')
+            out += [line + "\n" for line in _packed(names, " " * 12)]
             out.append("        ),\n")
         out.append("    },\n")
     out.append(FOOTER)
@@ -139,11 +175,12 @@ def main(argv: list[str] | None = None) -> int:
     if args.package is None:
         parser.error(f"give the com.siemens.ros-sharp folder or set {ENV_VAR}")
     try:
-        table = shipped_classes(Path(args.package))
+        fields: dict[int, dict[str, list[str]]] = {}
+        table = shipped_classes(Path(args.package), fields)
     except (SourceError, OSError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    text = render(table, args.tag)
+    text = render(table, args.tag, fields)
     output: Path = args.output
     if args.check:
         current = output.read_text(encoding="utf-8") if output.is_file() else ""

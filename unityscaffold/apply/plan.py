@@ -164,6 +164,7 @@ def make_plan(
     beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
     deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside)
     notes = [*rossharp.notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
+    notes += [s.warning for s in code.messages.skipped if s.warning]
     new_lock = LockFile(
         files={
             **pruning.kept_files,

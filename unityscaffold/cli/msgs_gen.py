@@ -117,6 +117,8 @@ def _report(code: GeneratedCode, changes: list[FileChange], out: Path, *, check:
             typer.echo(f"{change.kind.value:9} {_relative(change, out)}{reason}")
     for skipped in code.skipped:
         typer.echo(f"{'skip':9} {skipped.path} ({skipped.ros_type}): {skipped.reason}")
+        if skipped.warning:
+            typer.echo(f"warning: {skipped.warning}", err=True)
     counts = {k: sum(1 for c in changes if c.kind is k) for k in ChangeKind}
     would = "would be " if check else ""
     typer.echo(

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from functools import cache
 
-from unityscaffold.codegen._shipped_data import SHIPPED
+from unityscaffold.codegen._shipped_data import FIELDS, SHIPPED
 from unityscaffold.interfaces.model import Dialect
 
-__all__ = ["ROS1_HANDWRITTEN", "shipped_classes"]
+__all__ = ["ROS1_HANDWRITTEN", "shipped_classes", "shipped_fields"]
 
 ROS1_HANDWRITTEN: dict[tuple[str, str], str] = {
     ("Std", "Time"): "std_msgs/Time",
@@ -29,4 +29,15 @@ def shipped_classes(dialect: Dialect) -> dict[tuple[str, str], str]:
         for entry in entries:
             ros_name, _, explicit = entry.partition(">")
             table[(namespace, explicit or ros_name.rsplit("/", 1)[-1])] = ros_name
+    return table
+
+
+@cache
+def shipped_fields(dialect: Dialect) -> dict[tuple[str, str], tuple[str, ...]]:
+    """(namespace segment, class name) -> the fields ROS#'s class declares, in order. Empty
+    for a class whose fields are inherited (ROS#'s action wrappers): nothing to compare."""
+    table: dict[tuple[str, str], tuple[str, ...]] = {}
+    for key, names in FIELDS[int(dialect)].items():
+        namespace, _, name = key.partition("/")
+        table[(namespace, name)] = names
     return table

@@ -13,6 +13,7 @@ from unityscaffold.codegen._actions import build_action, build_wrapper
 from unityscaffold.codegen._build import FileContext, build_message
 from unityscaffold.codegen._classes import ClassEntry, ClassSet, collect_classes, source_name
 from unityscaffold.codegen._identity import Identities
+from unityscaffold.codegen._shipped import shipped_fields
 from unityscaffold.codegen._views import View
 from unityscaffold.codegen.naming import CsClass
 from unityscaffold.codegen.roles import MESSAGE_ROLES, ClassRole
@@ -56,6 +57,9 @@ class SkippedClass:
     role: ClassRole
     cs_class: CsClass
     reason: str
+    #: Set when the class ROS# ships has other fields than this definition: messages would
+    #: lose or lack fields on the wire. Says how to generate ours instead.
+    warning: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -108,6 +112,28 @@ def _view(class_set: ClassSet, ctx: FileContext, ids: Identities, item: ClassEnt
     )
 
 
+def _differs_from_shipped(item: ClassEntry, dialect: Dialect, ids: Identities) -> str | None:
+    """A warning when ROS#'s class for ``item`` declares other fields than its definition."""
+    if item.spec is None or not item.skip_reason or not item.skip_reason.startswith("ROS# ships"):
+        return None
+    key = (item.cs_class.namespace.rsplit(".", 1)[-1], item.cs_class.name)
+    theirs = shipped_fields(dialect).get(key, ())
+    ours = tuple(f.name for f in item.spec.fields)
+    if not theirs or theirs == ours:
+        return None
+    missing = [n for n in ours if n not in theirs]
+    extra = [n for n in theirs if n not in ours]
+    parts = [f"lacks {', '.join(missing)}"] if missing else []
+    parts += [f"has {', '.join(extra)}, which this definition does not"] if extra else []
+    if not parts:
+        parts = ["declares the same fields in another order"]
+    return (
+        f"ROS#'s {item.cs_class.full_name} does not match {item.ros_message_name} as defined "
+        f"here ({ids.label(item.identity_of)}): it {'; '.join(parts)}; to generate ours "
+        "instead, set a `namespace:` of your own in the manifest (msgs gen --namespace)"
+    )
+
+
 def generate(registry: Registry, roots: Iterable[Interface], options: Options) -> GeneratedCode:
     """C# for ``roots`` and every type they use; raises ``UserError`` on bad input."""
     class_set = collect_classes(
@@ -122,7 +148,14 @@ def generate(registry: Registry, roots: Iterable[Interface], options: Options) -
             GeneratedFile(item.path, text, item.interface.full_name, item.role, item.cs_class)
         )
     skipped = [
-        SkippedClass(i.path, i.interface.full_name, i.role, i.cs_class, i.skip_reason or "")
+        SkippedClass(
+            i.path,
+            i.interface.full_name,
+            i.role,
+            i.cs_class,
+            i.skip_reason or "",
+            _differs_from_shipped(i, options.dialect, ids),
+        )
         for i in class_set.skipped
     ]
     return GeneratedCode(
