@@ -12,11 +12,27 @@ import pytest
 from helpers import run_cli
 
 
-@pytest.mark.parametrize("shell", ["bash", "zsh", "fish"])
-def test_show_completion_prints_a_script_for_scaffold(shell: str) -> None:
-    run = run_cli("--show-completion", shell)
-    assert run.code == 0, run.err
-    assert "_SCAFFOLD_COMPLETE" in run.out
+@pytest.mark.parametrize(
+    ("shell", "registration"),
+    [
+        ("bash", "complete -o default -F _scaffold_completion scaffold"),
+        ("zsh", "compdef _scaffold_completion scaffold"),
+        ("fish", "complete --command scaffold"),
+    ],
+)
+def test_show_completion_prints_a_script_for_scaffold(shell: str, registration: str) -> None:
+    # With shellingham installed typer detects the shell from the process tree and ignores the
+    # name given; its own switch for tests makes the named shell count, so each is checked.
+    env = {**os.environ, "_TYPER_COMPLETE_TEST_DISABLE_SHELL_DETECTION": "1"}
+    done = subprocess.run(
+        [sys.executable, "-m", "unityscaffold", "--show-completion", shell],
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 0, done.stderr
+    assert "_SCAFFOLD_COMPLETE" in done.stdout
+    assert registration in done.stdout
 
 
 def test_help_lists_install_completion() -> None:
