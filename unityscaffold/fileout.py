@@ -139,7 +139,10 @@ def _change(want: DesiredFile, seen: dict[Path, Path | None]) -> FileChange:
         current = path.read_bytes()
     except OSError as exc:
         if path.is_dir():
-            raise UserError(f"cannot write {path}: a folder of that name exists") from None
+            raise UserError(
+                f"cannot write {path}: a folder of that name exists",
+                hint="name a file, not a folder, or move that folder away",
+            ) from None
         blocker = _blocking_ancestor(path, seen)
         if blocker is not None:
             raise UserError(
@@ -280,7 +283,11 @@ def _stage(
             with contextlib.suppress(OSError):
                 folder.rmdir()
         if isinstance(exc, OSError):
-            raise UserError(f"cannot write {current}: {exc.strerror}") from None
+            raise UserError(
+                f"cannot write {current}: {exc.strerror}",
+                hint="check that its folder can be created and written to, and that the disk "
+                "has room; nothing was written",
+            ) from None
         raise
     return temps
 

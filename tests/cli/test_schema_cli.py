@@ -34,6 +34,25 @@ def test_schema_output_writes_the_file_once(tmp_path: Path) -> None:
     assert (again.code, again.out) == (0, f"unchanged {target}\n")
 
 
+def test_schema_output_to_a_folder_is_refused_with_a_hint(tmp_path: Path) -> None:
+    run = run_cli("schema", "-o", str(tmp_path))
+    assert run.code == 2
+    assert run.err == (
+        f"error: cannot write {tmp_path}: a folder of that name exists\n"
+        "  hint: name a file, not a folder, or move that folder away\n"
+    )
+
+
+def test_schema_output_where_no_folder_can_be_made_is_refused_with_a_hint(tmp_path: Path) -> None:
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    run = run_cli("schema", "-o", str(blocker / "sub" / "robot.schema.json"))
+    assert run.code == 2 and "Traceback" not in run.err
+    assert f"error: cannot write {blocker / 'sub' / 'robot.schema.json'}" in run.err
+    assert "  hint: " in run.err
+    assert blocker.read_text() == ""
+
+
 def test_init_copies_the_schema_and_the_manifest_points_at_it(tmp_path: Path) -> None:
     project = tmp_path / "robot"
     assert run_cli("init", str(project)).code == 0
