@@ -138,6 +138,10 @@ def _change(want: DesiredFile, seen: dict[Path, Path | None]) -> FileChange:
         # Read first: an existing file settles every question below with one system call.
         current = path.read_bytes()
     except OSError as exc:
+        if isinstance(exc, FileNotFoundError) and os.name == "posix":
+            # ENOENT: nothing there and no ancestor is a file (that would be ENOTDIR), so the
+            # checks below would stat for nothing. Windows reports both as not found.
+            return FileChange(path, ChangeKind.CREATE, want.content)
         if path.is_dir():
             raise UserError(
                 f"cannot write {path}: a folder of that name exists",

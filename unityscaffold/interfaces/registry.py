@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.interfaces import ros1, ros2
@@ -52,8 +52,7 @@ class TypeNotFound(UserError):
         self.advice = advice
 
 
-@dataclass(frozen=True, slots=True)
-class _Key:
+class _Key(NamedTuple):  # a tuple hashes in C: the registry's dicts are hit per field
     kind: InterfaceKind
     package: str
     name: str
@@ -69,6 +68,8 @@ class Registry:
         self._shadowed: dict[_Key, list[InterfaceFile]] = {}
         self._parsed: dict[Path, Interface] = {}
         self._broken: dict[Path, LocatedError] = {}
+        # find's answers by name: generation asks for the same field types thousands of times
+        self._found: dict[str, Interface | None] = {}
         for package in find_packages(self.roots):
             for file in package.files():
                 key = _Key(file.kind, file.package, file.name)
@@ -174,6 +175,13 @@ class Registry:
         ``rosmsg`` and ``rossrv`` read names: there an action is not a type, its messages
         ``pkg/NameGoal``, … are), so ``nav_msgs/GetMap`` is the service.
         """
+        if name in self._found:
+            return self._found[name]
+        found = self._find(name)
+        self._found[name] = found  # not reached when it raises: errors are raised every time
+        return found
+
+    def _find(self, name: str) -> Interface | None:
         parts = name.strip().split("/")
         if len(parts) == 3 and parts[1] in {k.value for k in InterfaceKind}:
             package, kind, short = parts[0], InterfaceKind(parts[1]), parts[2]

@@ -148,8 +148,10 @@ def search_roots(
     return roots
 
 
-def _is_package(path: Path) -> bool:
-    return any((path / sub).is_dir() for sub in _SUBDIRS)
+def _is_package(path: Path | str) -> bool:
+    # os.path on strings: called for every folder of /usr/share, where Path joins cost more
+    # than the stat
+    return any(os.path.isdir(os.path.join(path, sub)) for sub in _SUBDIRS)
 
 
 def package_name(path: Path) -> str:
@@ -171,7 +173,7 @@ def _walk(root: SearchRoot) -> Iterator[Path]:
             return
     if not root.recursive:
         for entry in sorted(os.scandir(root.path), key=lambda e: e.name):
-            if entry.is_dir() and not entry.name.startswith(".") and _is_package(Path(entry.path)):
+            if entry.is_dir() and not entry.name.startswith(".") and _is_package(entry.path):
                 yield Path(entry.path)
         return
     for current, dirs, _files in os.walk(root.path):
