@@ -8,6 +8,7 @@ reports them as drift.
 
 from __future__ import annotations
 
+import bisect
 import os
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -55,11 +56,19 @@ def plan_leftovers(
     candidates = set(inside_output)
     for path in gone:
         candidates.update(p for p in path.parents if p != assets and p.is_relative_to(assets))
-    holding = {parent for path in wanted for parent in path.parents}
+    # Whether a wanted file lies under a folder, by a sorted list of paths as text: building
+    # the set of every wanted file's ancestors costs far more than these few lookups.
+    texts = sorted(str(p) for p in wanted)
+
+    def holds(folder: Path) -> bool:
+        prefix = str(folder) + os.sep
+        at = bisect.bisect_left(texts, prefix)
+        return at < len(texts) and texts[at].startswith(prefix)
+
     emptied: list[Path] = []
     metas: list[Path] = []
     for folder in sorted(candidates, key=lambda p: len(p.parts), reverse=True):
-        if folder in holding or not folder.is_dir():
+        if holds(folder) or not folder.is_dir():
             continue
         try:
             names = os.listdir(folder)
