@@ -9,6 +9,8 @@ from pathlib import Path
 import pytest
 from helpers import run_cli
 
+from unityscaffold.cli import one_line_paragraphs
+
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
@@ -88,3 +90,34 @@ def test_every_command_help_has_examples(command: list[str]) -> None:
     assert run.code == 0, run.err
     assert "Example" in run.out
     assert f"scaffold {' '.join(command)}".strip() in run.out.split("Example", 1)[1]
+
+
+def test_help_prose_is_one_line_per_paragraph_and_examples_keep_their_lines() -> None:
+    doc = """Make it so.
+
+        Running it again changes nothing (see
+        --force); your code stays.
+
+        Examples:
+
+          scaffold apply
+          scaffold apply --check
+        """
+    assert one_line_paragraphs(doc) == (
+        "Make it so.\n\n"
+        "Running it again changes nothing (see --force); your code stays.\n\n"
+        "Examples:\n\n"
+        "  scaffold apply\n"
+        "  scaffold apply --check"
+    )
+
+
+def test_apply_help_does_not_break_its_prose_where_the_docstring_does(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setenv("COLUMNS", "400")  # wide enough for a paragraph on one line
+    run = run_cli("apply", "--help")
+    assert run.code == 0
+    # the docstring breaks its lines after '(see --force);' and before 'GameObjects are known'
+    assert "stop it (see --force); your code belongs in the *.User.cs files" in run.out
+    assert "never rewritten. GameObjects are known by identity" in run.out

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import importlib
+import inspect
 import sys
+from typing import Any
 
 import typer
 
@@ -52,6 +54,32 @@ def build_app(argv: list[str]) -> typer.Typer:
     return app
 
 
+def one_line_paragraphs(text: str) -> str:
+    """``text`` with each prose paragraph on one line; indented lines (examples) kept as they are.
+
+    typer keeps the line breaks of a docstring's later paragraphs and rich then wraps those
+    lines again at the terminal's width, which left help texts ragged mid-sentence.
+    """
+    paragraphs = []
+    for paragraph in inspect.cleandoc(text).split("\n\n"):
+        lines: list[str] = []
+        for line in paragraph.split("\n"):
+            if lines and not line.startswith(" ") and not lines[-1].startswith(" "):
+                lines[-1] += " " + line
+            else:
+                lines.append(line)
+        paragraphs.append("\n".join(lines))
+    return "\n\n".join(paragraphs)
+
+
+def _reflow_help(command: Any) -> None:
+    """Every command's help as ``one_line_paragraphs`` (the click tree typer builds)."""
+    if command.help:
+        command.help = one_line_paragraphs(command.help)
+    for sub in getattr(command, "commands", {}).values():
+        _reflow_help(sub)
+
+
 def _version(value: bool) -> None:
     if value:
         typer.echo(f"scaffold {__version__}")
@@ -96,7 +124,9 @@ def main(argv: list[str] | None = None) -> int:
         # Without standalone mode click returns a command's exit status instead of exiting.
         args = sys.argv[1:] if argv is None else argv
         # prog_name fixed: also `python -m unityscaffold` completes and shows usage as `scaffold`
-        status = build_app(args)(args=args, prog_name="scaffold", standalone_mode=False)
+        command = typer.main.get_command(build_app(args))
+        _reflow_help(command)
+        status = command(args=args, prog_name="scaffold", standalone_mode=False)
     except ScaffoldError as exc:
         typer.echo(exc.render(), err=True)
         return int(exc.exit_code)
