@@ -7,6 +7,8 @@ import contextlib
 import difflib
 import io
 import os
+import signal
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -110,3 +112,20 @@ def assert_same_tree(actual: Path, expected: Path, hint: str = UPDATE_HINT) -> N
     problems = tree_differences(actual, expected)
     if problems:
         pytest.fail(f"{actual} differs from {expected} ({hint}):\n{problems}", pytrace=False)
+
+
+@contextlib.contextmanager
+def deadline(seconds: int, what: str) -> Iterator[None]:
+    """Fail with ``TimeoutError`` when the block runs past ``seconds``: a guard against a hang
+    (a walk that does not end), not a speed check (speed is bench/'s job)."""
+
+    def expire(*_: object) -> None:
+        raise TimeoutError(f"still running after {seconds} s: {what}")
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)

@@ -8,14 +8,11 @@ a walk that never ends.
 
 from __future__ import annotations
 
-import contextlib
 import shutil
-import signal
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from helpers import run_cli, snapshot
+from helpers import deadline, run_cli, snapshot
 
 from unityscaffold.unity.scene import SceneDocument
 
@@ -69,20 +66,6 @@ CYCLES = {
 }
 
 
-@contextlib.contextmanager
-def deadline(seconds: int) -> Iterator[None]:
-    def expire(*_: object) -> None:
-        raise TimeoutError(f"still running after {seconds} s: a hierarchy walk does not end")
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(seconds)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
-
-
 @pytest.fixture
 def sample(tmp_path: Path) -> Path:
     copy = tmp_path / "sample_project"
@@ -120,7 +103,7 @@ def test_a_hierarchy_cycle_is_refused_at_its_line_by_every_command(
     scene = sample / SCENE
     args = [a.format(scene=scene, manifest=sample / "robot.yaml") for a in command]
     before = snapshot(sample)
-    with deadline(60):
+    with deadline(60, "a hierarchy walk does not end"):
         run = run_cli(*args)
     assert run.code == 2, run.out + run.err
     first = run.err.splitlines()[0]
@@ -139,7 +122,7 @@ def test_a_prefab_instance_parented_inside_itself_is_refused() -> None:
         "m_TransformParent: {fileID: 2742884835330475003}",
     )
     scene = SceneDocument.parse(text, "loop.prefab")
-    with deadline(60):
+    with deadline(60, "a hierarchy walk does not end"):
         problems = scene.validate()
         walked = [go.path for go in scene.gameobjects()]
     assert [(p.location.line, p.location.col, p.message) for p in problems] == [

@@ -19,12 +19,10 @@ import contextlib
 import difflib
 import re
 import shutil
-import signal
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from helpers import run_cli
+from helpers import deadline, run_cli
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -43,20 +41,6 @@ mutation = st.tuples(
     st.integers(0, 10**6),
     st.integers(0, 10**6),
 )
-
-
-@contextlib.contextmanager
-def deadline(seconds: int) -> Iterator[None]:
-    def expire(*_: object) -> None:
-        raise TimeoutError(f"a command ran longer than {seconds} s")
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(seconds)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
 
 
 def mutate(text: str, steps: list[tuple[str, int, int]]) -> str:
@@ -88,7 +72,7 @@ def mutate(text: str, steps: list[tuple[str, int, int]]) -> str:
 
 
 def _run(*args: str) -> tuple[int, str]:
-    with deadline(SECONDS):
+    with deadline(SECONDS, "a command does not end"):
         run = run_cli(*args)
     assert "Traceback" not in run.err, run.err
     assert run.code in (0, 2), f"exit {run.code}:\n{run.out}{run.err}"
