@@ -93,6 +93,8 @@ def test_removing_a_topic_prunes_its_files_and_component_but_not_edited_user_cod
     # Edited by the user: kept, with its generated half so that the project still compiles.
     assert user_scan.exists() and (scripts / "ScanSubscriber.cs").exists()
     assert "kept Assets/RosGenerated/Scripts/ScanSubscriber.User.cs (you edited it)" in run.out
+    again = run_cli("apply", str(manifest))
+    assert again.code == 0 and "kept " not in again.out  # said once, not on every run
     scene = (sample / "unity" / "Assets" / "Scenes" / "Main.unity").read_text()
     assert "Topic: /odom\n" not in scene and "Topic: /scan\n" not in scene
     assert "remove topic /odom from Robot" in run.out
