@@ -17,7 +17,7 @@ from unityscaffold.codegen._views import (
     doc_lines,
 )
 from unityscaffold.codegen.naming import CsClass, escape_identifier
-from unityscaffold.errors import LocatedError, SourceLocation, located_at
+from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
 
 __all__ = ["INLINE_ELEMENTS", "FileContext", "build_message", "message_references"]
@@ -147,17 +147,26 @@ _INHERITED = (
 )
 
 
+_INHERITED_NAMES = {name: f"the inherited member {name}()" for name in _INHERITED}
+
+
 def _check_names(spec: MessageSpec, class_name: str) -> None:
-    seen = {"RosMessageName": "the RosMessageName constant", class_name: "the class"}
-    seen.update({name: f"the inherited member {name}()" for name in _INHERITED})
+    seen = {
+        "RosMessageName": "the RosMessageName constant",
+        class_name: "the class",
+        **_INHERITED_NAMES,
+    }
     items: list[Constant | Field] = [*spec.constants, *spec.fields]
     for item in items:
-        where = item.location or _where(spec)
-        with located_at(where):
+        try:
             escape_identifier(item.name)
+        except UserError:
+            # placed only when it fails: a context manager per field is a cost every class pays
+            with located_at(item.location or _where(spec)):
+                raise
         if item.name in seen:
             raise LocatedError.at(
-                where,
+                item.location or _where(spec),
                 f"'{item.name}' has the same C# name as {seen[item.name]} of class {class_name}",
                 hint="C# allows one member per name, none named like its class, "
                 "and none named like a member every class inherits; rename the field",
