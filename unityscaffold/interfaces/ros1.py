@@ -146,7 +146,7 @@ def _array_size(token: str) -> int | None:
 
 
 def _field(line: _Line, code: str, package: str, out: DiagnosticSink) -> Field | None:
-    tokens = [t for t in (part.strip() for part in code.split(" ")) if t]
+    tokens = [t for t in map(str.strip, code.split(" ")) if t]
     if len(tokens) != 2:
         out.error(
             line.at(_column_of(line.text, code[:1])),
@@ -245,7 +245,7 @@ def _constant_value(type_name: str, text: str) -> Scalar:
 
 def _constant(line: _Line, code: str, out: DiagnosticSink) -> Constant | None:
     raw = line.text
-    tokens = [t for t in (part.strip() for part in code.split(" ")) if t]
+    tokens = [t for t in map(str.strip, code.split(" ")) if t]
     type_name = tokens[0]
     if type_name not in ROS1_PRIMITIVES:
         out.error(
