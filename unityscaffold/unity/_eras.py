@@ -17,8 +17,11 @@ from unityscaffold.unity._split import Doc
 
 __all__ = ["SerializationEra", "detect_era"]
 
-_QUALIFIED_ID_RE = re.compile(r"^  m_EditorClassIdentifier: \S+::", re.M)
-_CLASSID_ITEM_RE = re.compile(r"^  - \d+: \{fileID:", re.M)
+# Matched from the line break before the key rather than with ``^`` and re.M: a pattern that
+# starts with literal text is found by a fast scan, ten times quicker than trying ``^`` at every
+# position. A document starts with its header, so no field line is at offset 0.
+_QUALIFIED_ID_RE = re.compile(r"\n  m_EditorClassIdentifier: \S+::")
+_CLASSID_ITEM_RE = re.compile(r"\n  - \d+: \{fileID:")
 
 
 @dataclass(frozen=True, slots=True)
@@ -46,7 +49,9 @@ class SerializationEra:
 
 def detect_era(docs: Sequence[Doc]) -> SerializationEra:
     """Read the era markers of a file from its documents."""
-    modern = legacy = root_order = plain_transform = classid = qualified = scene_roots = False
+    modern = legacy = root_order = plain_transform = scene_roots = False
+    gameobjects: list[str] = []
+    behaviours: list[str] = []
     for doc in docs:
         text = doc.text
         if doc.class_id == SCENE_ROOTS_CLASS:
@@ -59,10 +64,12 @@ def detect_era(docs: Sequence[Doc]) -> SerializationEra:
                 root_order = True
             else:
                 plain_transform = True
-        if doc.class_id == 1 and not classid and _CLASSID_ITEM_RE.search(text):
-            classid = True
-        if doc.class_id == 114 and not qualified and _QUALIFIED_ID_RE.search(text):
-            qualified = True
+        if doc.class_id == 1:
+            gameobjects.append(text)
+        elif doc.class_id == 114:
+            behaviours.append(text)
+    classid = _any_line(_CLASSID_ITEM_RE, gameobjects)
+    qualified = _any_line(_QUALIFIED_ID_RE, behaviours)
     if not root_order and not plain_transform:
         root_order = not scene_roots  # an empty pre-2022 scene has neither marker
     return SerializationEra(
@@ -72,3 +79,19 @@ def detect_era(docs: Sequence[Doc]) -> SerializationEra:
         scene_roots=scene_roots,
         qualified_class_identifier=qualified,
     )
+
+
+def _any_line(pattern: re.Pattern[str], texts: list[str]) -> bool:
+    """Whether a one-line ``pattern`` matches in any of ``texts``, searched about a megabyte at
+    a time (one regex call per batch, not per document). Every document ends with a line break,
+    so joining them never makes a line that was not there."""
+    batch: list[str] = []
+    size = 0
+    for text in texts:
+        batch.append(text)
+        size += len(text)
+        if size >= 1 << 20:
+            if pattern.search("".join(batch)):
+                return True
+            batch, size = [], 0
+    return bool(batch) and pattern.search("".join(batch)) is not None

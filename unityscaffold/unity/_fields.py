@@ -105,23 +105,22 @@ def scalar_value(doc: Doc, key: str) -> str | None:
     return value if isinstance(value, str) else None
 
 
-_CACHE_KEYS: dict[tuple[str, str], str] = {}
-
-
-def _cache_key(kind: str, key: str) -> str:
-    """One string per cache key, shared by every document's cache (not one per document)."""
-    name = _CACHE_KEYS.get((kind, key))
-    if name is None:
-        name = _CACHE_KEYS[kind, key] = kind + key
-    return name
+# One string per cache key, shared by every document's cache (not one per document); looked up
+# by the field's name alone because these are read tens of thousands of times per file.
+_REF_KEYS: dict[str, str] = {}
+_REFS_KEYS: dict[str, str] = {}
+_UNSET = object()
 
 
 def ref_value(doc: Doc, key: str) -> int | None:
     """The fileID of a ``key: {fileID: N}`` (or ``{fileID: N, guid: …}``) field."""
     # cached: the hierarchy and validation read the same links of every document
-    name = _cache_key("ref ", key)
-    if name in doc.cache:
-        return doc.cache[name]  # type: ignore[return-value]
+    name = _REF_KEYS.get(key)
+    if name is None:
+        name = _REF_KEYS[key] = "ref " + key
+    cached = doc.cache.get(name, _UNSET)
+    if cached is not _UNSET:
+        return cached  # type: ignore[return-value]
     text = doc.text
     at = _key_line(text, key)
     found = None
@@ -134,7 +133,9 @@ def ref_value(doc: Doc, key: str) -> int | None:
 
 def list_refs(doc: Doc, key: str) -> list[int]:
     """fileIDs in an indentless list: ``- {fileID: N}``, ``- component: {…}`` or ``- 4: {…}``."""
-    name = _cache_key("refs ", key)
+    name = _REFS_KEYS.get(key)
+    if name is None:
+        name = _REFS_KEYS[key] = "refs " + key
     cached = cast("tuple[int, ...] | None", doc.cache.get(name))
     if cached is None:
         text = doc.text
