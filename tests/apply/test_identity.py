@@ -124,8 +124,8 @@ def test_follow_renames_rewrites_the_manifest_and_never_duplicates(
     run = run_cli("apply", "--follow-renames", str(project / "robot.yaml"))
     assert run.code == 0, run.err
     assert (
-        f"note: `TurtleBot3` is now `{new}` in Main.unity: followed, and robot.yaml:7, "
-        "robot.yaml:13 rewritten" in run.out
+        f"note: `TurtleBot3` is now `{new}` in Main.unity: followed; robot.yaml:7, "
+        "robot.yaml:13 take the new path" in run.out
     )
     assert _gameobject_count(project) == objects
     assert _scene(project).read_text() == scene_before  # everything is still in place

@@ -104,7 +104,8 @@ def report_moves(scene: str, moved: list[Moved]) -> LocatedError:
 
 
 def followed_notes(scenes: Iterable[HasFollowed]) -> list[str]:
-    """One line per GameObject followed to its new path, with the manifest lines rewritten."""
+    """One line per GameObject followed to its new path, with the manifest lines that take it.
+    Worded for the plan as much as for the run, since --dry-run prints it too."""
     notes = []
     for scene in scenes:
         groups: dict[tuple[str, str], set[str]] = {}
@@ -113,8 +114,8 @@ def followed_notes(scenes: Iterable[HasFollowed]) -> list[str]:
         for (old, new), lines in groups.items():
             shown = ", ".join(sorted(lines, key=_line_key))
             notes.append(
-                f"`{old}` is now `{new}` in {PurePosixPath(scene.relative).name}: followed, "
-                f"and {shown} rewritten"
+                f"`{old}` is now `{new}` in {PurePosixPath(scene.relative).name}: followed; "
+                f"{shown} take the new path"
             )
     return notes
 
