@@ -11,7 +11,7 @@ __all__ = ["starter_manifest"]
 
 _TEMPLATE = string.Template("""\
 ${modeline}# unityscaffold manifest: run `scaffold apply robot.yaml` after editing.
-# Every key is described in docs/manifest.md.
+# Every key is described in unityscaffold's docs/manifest.md and by `scaffold schema`.
 version: ${version}
 ros: ${ros}                 # ROS version of the robot: 1 or 2
 project: .              # the Unity project root, relative to this file
