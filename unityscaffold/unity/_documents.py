@@ -15,6 +15,7 @@ from collections.abc import Iterator, Sequence, Set
 from unityscaffold.errors import SourceLocation, UserError
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, SETTINGS_CLASSES
 from unityscaffold.unity._eras import SerializationEra, detect_era
+from unityscaffold.unity._gcpause import gc_paused
 from unityscaffold.unity._split import Doc
 from unityscaffold.unity.index import Hierarchy, build_hierarchy
 
@@ -112,7 +113,8 @@ class Documents:
     @property
     def hierarchy(self) -> Hierarchy:
         if self._hierarchy is None:
-            self._hierarchy = build_hierarchy(self._docs, self._by_id)
+            with gc_paused():
+                self._hierarchy = build_hierarchy(self._docs, self._by_id)
         return self._hierarchy
 
     # ----- changing -----------------------------------------------------------------------------

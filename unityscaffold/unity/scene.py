@@ -20,6 +20,7 @@ from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._fileids import candidate_file_ids
+from unityscaffold.unity._gcpause import gc_paused
 from unityscaffold.unity._split import Doc, split_text
 from unityscaffold.unity._validate import validate_docs
 from unityscaffold.unity.builtins import BuiltinClass
@@ -77,8 +78,9 @@ class SceneDocument:
     @classmethod
     def parse(cls, text: str, path: str = "<scene>") -> SceneDocument:
         """Split ``text``; raise ``LocatedError`` if it is not complete Unity YAML."""
-        split = split_text(text, path)
-        return cls(path, split.prolog, split.docs, split.crlf)
+        with gc_paused():
+            split = split_text(text, path)
+            return cls(path, split.prolog, split.docs, split.crlf)
 
     @classmethod
     def load(cls, path: str | Path) -> SceneDocument:
@@ -127,7 +129,8 @@ class SceneDocument:
     def validate(self) -> list[Diagnostic]:
         """Every problem that would make the file unsafe to write (empty list: all good)."""
         docs = self._docs
-        return validate_docs(self.path, docs.prolog, docs.in_order, docs.changed)
+        with gc_paused():
+            return validate_docs(self.path, docs.prolog, docs.in_order, docs.changed)
 
     def write(self, path: str | Path | None = None) -> bool:
         """Validate, then write atomically if the bytes changed; return whether it wrote."""
