@@ -27,11 +27,17 @@ __all__ = [
 _CS_NEWLINES = "\r\n\u0085\u2028\u2029"
 # XML 1.0 allows no other control characters, not even as character references.
 _XML_FORBIDDEN = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff\ud800-\udfff]")
+# Any character _xml_escape changes; most comment lines hold none, and one search says so.
+_XML_CHANGED = re.compile(
+    "[&<>\r\n\u0085\u2028\u2029\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff\ud800-\udfff]"
+)
 
 
 def _xml_escape(text: str) -> str:
     """One comment line as XML text on one C# line: markup escaped, line breaks made spaces,
     characters XML cannot hold replaced by U+FFFD."""
+    if _XML_CHANGED.search(text) is None:
+        return text
     for char in _CS_NEWLINES:
         text = text.replace(char, " ")
     text = _XML_FORBIDDEN.sub("\ufffd", text)
