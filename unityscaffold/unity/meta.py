@@ -26,7 +26,10 @@ def guid_for(salt: str, asset_path: str) -> str:
     posix = asset_path.replace("\\", "/")
     if not posix or posix.startswith("/") or re.match(r"[A-Za-z]:", posix):
         raise ValueError(f"asset path must be relative to the project root: {asset_path!r}")
-    normal = PurePosixPath(posix).as_posix()
+    parts = posix.split("/")
+    # A path with no empty or "." part is already in normal form; PurePosixPath (a tenth of the
+    # cost of this function, which runs for every generated file) is for the others.
+    normal = PurePosixPath(posix).as_posix() if "" in parts or "." in parts else posix
     seed, attempt = f"{salt}:{normal}", 0
     while True:
         data = seed if attempt == 0 else f"{seed}#{attempt}"
