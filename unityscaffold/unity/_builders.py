@@ -147,15 +147,11 @@ def new_gameobject(
     return _render(f"--- !u!1 &{file_id}", "GameObject", era, exemplar, values)
 
 
-def new_transform(
-    era: SerializationEra,
-    exemplar: Doc | None,
-    file_id: int,
-    gameobject_id: int,
-    father_id: int,
-    root_order: int | None,
-) -> str:
-    values: dict[str, str | list[str]] = {
+def _transform_values(
+    exemplar: Doc | None, gameobject_id: int, father_id: int
+) -> dict[str, str | list[str]]:
+    """The fields a new Transform and a new RectTransform share, at Unity's identity values."""
+    return {
         **_COMMON,
         "m_PrefabInternal": _prefab_internal(exemplar),
         "m_GameObject": f"{{fileID: {gameobject_id}}}",
@@ -167,6 +163,17 @@ def new_transform(
         "m_Father": f"{{fileID: {father_id}}}",
         "m_LocalEulerAnglesHint": "{x: 0, y: 0, z: 0}",
     }
+
+
+def new_transform(
+    era: SerializationEra,
+    exemplar: Doc | None,
+    file_id: int,
+    gameobject_id: int,
+    father_id: int,
+    root_order: int | None,
+) -> str:
+    values = _transform_values(exemplar, gameobject_id, father_id)
     if root_order is not None:
         values["m_RootOrder"] = str(root_order)
     if exemplar is None:
@@ -183,17 +190,8 @@ def new_rect_transform(
     root_order: int | None,
 ) -> str:
     """A UI object's RectTransform, with the values Unity gives a new one."""
-    values: dict[str, str | list[str]] = {
-        **_COMMON,
-        "m_PrefabInternal": _prefab_internal(exemplar),
-        "m_GameObject": f"{{fileID: {gameobject_id}}}",
-        "m_LocalRotation": "{x: 0, y: 0, z: 0, w: 1}",
-        "m_LocalPosition": "{x: 0, y: 0, z: 0}",
-        "m_LocalScale": "{x: 1, y: 1, z: 1}",
-        "m_ConstrainProportionsScale": "0",
-        "m_Children": "[]",
-        "m_Father": f"{{fileID: {father_id}}}",
-        "m_LocalEulerAnglesHint": "{x: 0, y: 0, z: 0}",
+    values = {
+        **_transform_values(exemplar, gameobject_id, father_id),
         "m_AnchorMin": "{x: 0.5, y: 0.5}",
         "m_AnchorMax": "{x: 0.5, y: 0.5}",
         "m_AnchoredPosition": "{x: 0, y: 0}",
