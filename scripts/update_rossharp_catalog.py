@@ -48,6 +48,7 @@ from unityscaffold.unity.csharp import (  # noqa: E402
     UNITY_STRUCTS,
     SourceError,
     TypeDecl,
+    element_type,
     parse_file,
     split_top,
 )
@@ -137,11 +138,9 @@ def resolve_type(package: Package, written: str, context: TypeDecl) -> str | Non
     ``T[]`` and ``List<T>`` of these.
     """
     text = written.removeprefix("UnityEngine.").removeprefix("System.")
-    if text.endswith("[]"):
-        inner = resolve_type(package, text[:-2], context)
-        return None if inner is None or inner.endswith("]") else f"{inner}[]"
-    if text.startswith(("List<", "Collections.Generic.List<")):
-        inner = resolve_type(package, _type_arguments(text)[0], context)
+    element = element_type(text)
+    if element is not None:
+        inner = resolve_type(package, element, context)
         return None if inner is None or inner.endswith("]") else f"{inner}[]"
     if text in PRIMITIVES:
         return PRIMITIVES[text]

@@ -21,6 +21,7 @@ __all__ = [
     "RawField",
     "SourceError",
     "TypeDecl",
+    "element_type",
     "matching",
     "parse_file",
     "split_top",
@@ -230,6 +231,16 @@ def matching(text: str, start: int, open_: str = "{", close: str = "}") -> int:
             if depth == 0:
                 return i
     raise SourceError(f"unbalanced {open_!r}")
+
+
+def element_type(text: str) -> str | None:
+    """The element type when Unity stores a field of type ``text`` as a list (``T[]`` or
+    ``List<T>``, with ``System.``/``UnityEngine.`` already taken off), else None."""
+    if text.endswith("[]"):
+        return text[:-2]
+    if text.startswith(("List<", "Collections.Generic.List<")) and text.endswith(">"):
+        return text[text.index("<") + 1 : -1].strip()
+    return None
 
 
 def split_top(text: str, separator: str = ",") -> list[str]:

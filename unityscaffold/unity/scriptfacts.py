@@ -24,6 +24,7 @@ from unityscaffold.unity.csharp import (
     UNITY_STRUCTS,
     SourceError,
     TypeDecl,
+    element_type,
     parse_file,
     split_top,
 )
@@ -162,11 +163,7 @@ def _kind(
 ) -> str | None:
     """What Unity stores for a field of C# type ``written`` (None: Unity does not store it)."""
     text = written.removeprefix("UnityEngine.").removeprefix("System.")
-    inner = None
-    if text.endswith("[]"):
-        inner = text[:-2]
-    elif text.startswith(("List<", "Collections.Generic.List<")) and text.endswith(">"):
-        inner = text[text.index("<") + 1 : -1]
+    inner = element_type(text)
     if inner is not None:
         kind = _kind(inner, enums, used, is_script)
         if kind is None or kind.endswith("[]") or kind.startswith("raw:"):
