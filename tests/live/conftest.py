@@ -9,7 +9,6 @@ import shutil
 import signal
 import socket
 import subprocess
-import time
 import xmlrpc.client
 from collections.abc import Iterator
 from pathlib import Path
@@ -17,8 +16,9 @@ from typing import Any
 
 import pytest
 from helpers import SYSTEM_PYTHON, require
+from processes import free_port, start, stop, wait_for
 
-from tests.live.helpers_live import Ros1System, free_port
+from tests.live.helpers_live import Ros1System
 
 DATA = Path(__file__).parent / "data"
 TEST_PACKAGE = DATA / "scaffold_test_msgs"
@@ -61,38 +61,6 @@ def genmsg_truth(genmsg_python: Path, ros1_share: Path) -> dict[str, Any]:
     return dict(json.loads(output.stdout))
 
 
-def _start(argv: list[str], env: dict[str, str], log: Path) -> subprocess.Popen[bytes]:
-    with log.open("wb") as out:
-        return subprocess.Popen(
-            argv, env=env, stdout=out, stderr=subprocess.STDOUT, start_new_session=True
-        )
-
-
-def _stop(process: subprocess.Popen[bytes]) -> None:
-    """Stop a process we started, and its children, by its process group id."""
-    if process.poll() is not None:
-        return
-    os.killpg(process.pid, signal.SIGTERM)
-    try:
-        process.wait(timeout=5)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.wait(timeout=5)
-
-
-def _wait_for(what: str, check: Any, timeout: float, logs: list[Path]) -> None:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        try:
-            if check():
-                return
-        except OSError:
-            pass
-        time.sleep(0.1)
-    text = "\n".join(p.read_text(errors="replace")[-2000:] for p in logs if p.exists())
-    raise RuntimeError(f"{what} did not come up within {timeout} s\n{text}")
-
-
 @pytest.fixture(scope="session")
 def ros1_system(
     genmsg_truth: dict[str, Any], tmp_path_factory: pytest.TempPathFactory
@@ -125,22 +93,22 @@ def ros1_system(
     silent = socket.socket()  # listens, never accepts: a node that hangs
     try:
         processes.append(
-            _start(
+            start(
                 [str(SYSTEM_PYTHON), "/usr/bin/rosmaster", "--core", "-p", str(port)],
                 env,
                 home / "master.log",
             )
         )
         master = xmlrpc.client.ServerProxy(url)
-        _wait_for("rosmaster", lambda: master.getPid("/test")[0] == 1, 20, [home / "master.log"])
+        wait_for("rosmaster", lambda: master.getPid("/test")[0] == 1, 20, [home / "master.log"])
         processes.append(
-            _start(
+            start(
                 [str(SYSTEM_PYTHON), str(DATA / "ros1_node.py"), str(definitions)],
                 env,
                 home / "node.log",
             )
         )
-        _wait_for(
+        wait_for(
             "the rospy node",
             lambda: _node_ready(master),
             30,
@@ -153,7 +121,7 @@ def ros1_system(
         yield Ros1System(url, env, genmsg_truth, "/ghost")
     finally:
         for process in reversed(processes):
-            _stop(process)
+            stop(process)
         silent.close()
         shutil.rmtree(home, ignore_errors=True)
 

@@ -8,12 +8,12 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from processes import free_port
 
 from tests.live.helpers_live import (
     MANIFEST,
     Ros1System,
     assert_clean_failure,
-    free_port,
     run_cli,
     snapshot,
 )

@@ -112,7 +112,7 @@ def test_a_custom_service_is_checked_against_a_local_srv(
 
 
 def test_unreachable_master_is_a_clear_error() -> None:
-    from tests.live.helpers_live import free_port
+    from processes import free_port
 
     url = f"http://127.0.0.1:{free_port()}"
     with pytest.raises(UserError, match=f"no ROS master at {url} \\(connection refused\\)"):

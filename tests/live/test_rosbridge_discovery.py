@@ -12,9 +12,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from processes import free_port
 
 from tests.live.fake_rosbridge import FakeRosbridge, running
-from tests.live.helpers_live import MANIFEST, assert_clean_failure, free_port, run_cli, snapshot
+from tests.live.helpers_live import MANIFEST, assert_clean_failure, run_cli, snapshot
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.live import Direction, NameFilter, discover

@@ -13,16 +13,14 @@ from __future__ import annotations
 
 import os
 import shutil
-import signal
 import socket
 import subprocess
-import time
 import xmlrpc.client
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from helpers import SYSTEM_PYTHON
+from processes import free_port, start, stop, wait_for
 
 REPO = Path(__file__).resolve().parents[2]
 DATA = Path(__file__).parent / "data"
@@ -37,13 +35,6 @@ def vendor_folder(variable: str, name: str) -> Path | None:
         return Path(os.environ[variable])
     candidate = REPO.parent / "shared" / "vendor" / name
     return candidate if candidate.is_dir() else None
-
-
-def free_port() -> int:
-    """A TCP port on loopback that nothing listens on right now."""
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def _generate(package: str, folder: Path, out: Path, kind: str) -> None:
@@ -85,39 +76,6 @@ def prepare_python_path(vendor: Path, root: Path) -> Path:
     share.mkdir()
     shutil.copytree(vendor / "rosapi", share / "rosapi")
     return python
-
-
-def _start(argv: list[str], env: dict[str, str], log: Path) -> subprocess.Popen[bytes]:
-    with log.open("wb") as out:
-        return subprocess.Popen(
-            argv, env=env, stdout=out, stderr=subprocess.STDOUT, start_new_session=True
-        )
-
-
-def stop(process: subprocess.Popen[bytes]) -> None:
-    """Stop a process we started, and its children, by its process group id."""
-    if process.poll() is not None:
-        return
-    os.killpg(process.pid, signal.SIGTERM)
-    try:
-        process.wait(timeout=5)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.wait(timeout=5)
-
-
-def wait_for(what: str, check: Callable[[], bool], timeout: float, logs: list[Path]) -> None:
-    """Poll ``check`` until it is true; fail with the last lines of ``logs`` after ``timeout``."""
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        try:
-            if check():
-                return
-        except OSError:
-            pass
-        time.sleep(0.1)
-    text = "\n".join(p.read_text(errors="replace")[-3000:] for p in logs if p.exists())
-    raise RuntimeError(f"{what} did not come up within {timeout} s\n{text}")
 
 
 def _listening(port: int) -> bool:
@@ -174,7 +132,7 @@ def start_bridge(
     logs = [home / "master.log", home / "rosbridge.log", home / "rosapi.log"]
     try:
         bridge.processes.append(
-            _start(
+            start(
                 [str(SYSTEM_PYTHON), "/usr/bin/rosmaster", "--core", "-p", str(master_port)],
                 env,
                 logs[0],
@@ -183,7 +141,7 @@ def start_bridge(
         wait_for("rosmaster", lambda: bridge.master().getPid("/test")[0] == 1, 20, logs)
         websocket = vendor / "rosbridge_server" / "scripts" / "rosbridge_websocket.py"
         bridge.processes.append(
-            _start(
+            start(
                 [
                     str(SYSTEM_PYTHON),
                     str(DATA / "bind_loopback.py"),
@@ -198,7 +156,7 @@ def start_bridge(
             )
         )
         bridge.processes.append(
-            _start(
+            start(
                 [str(SYSTEM_PYTHON), str(vendor / "rosapi" / "scripts" / "rosapi_node")],
                 env,
                 logs[2],
