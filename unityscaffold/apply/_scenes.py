@@ -536,29 +536,25 @@ def _edit_scene(ctx: _Context, plan: ScenePlan, doc: SceneDocument, lock: LockFi
             # later entry attaches.
             values = _catalog_values(ctx, editor, facts, entry, references=False)
             deferred.append((entry, ref, facts, where))
-        editor.attach(
-            entry.gameobject,
-            entry.create,
-            ref,
-            values,
-            where,
-            f"component {entry.label}",
-            entry.key,
-        )
+        _attach_component(editor, entry, ref, values, where)
     for entry, ref, facts, where in deferred:
         values = _catalog_values(ctx, editor, facts, entry, references=True)
-        editor.attach(
-            entry.gameobject,
-            entry.create,
-            ref,
-            values,
-            where,
-            f"component {entry.label}",
-            entry.key,
-        )
+        _attach_component(editor, entry, ref, values, where)
         _requirements(editor, ctx, facts, entry)
     editor.prune(lock.components, editor.wanted)
     _prune_gameobjects(plan, doc, lock)
+
+
+def _attach_component(
+    editor: _SceneEditor,
+    entry: Component,
+    ref: ScriptRef,
+    values: list[tuple[str, FieldValue]],
+    where: SourceLocation,
+) -> None:
+    editor.attach(
+        entry.gameobject, entry.create, ref, values, where, f"component {entry.label}", entry.key
+    )
 
 
 def _prune_gameobjects(plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
