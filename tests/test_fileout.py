@@ -68,7 +68,7 @@ def test_a_failure_while_writing_leaves_nothing_behind(
     real = fileout._write_temp
     calls = []
 
-    def flaky(change: FileChange, durable: bool, chunks: fileout.Chunks | None = None) -> Path:
+    def flaky(change: FileChange, durable: bool, chunks: fileout.Chunks | None = None) -> str:
         calls.append(change.path)
         if len(calls) == 3:
             raise OSError(28, "No space left on device", str(change.path))
@@ -214,3 +214,34 @@ def test_a_name_longer_than_file_systems_take_is_refused_before_anything_is_touc
     assert fileout.name_too_long("Assets/" + "a" * 250, len(".meta")) is None
     assert fileout.name_too_long("Assets/" + "a" * 251, len(".meta")) == "a" * 251
     assert list(tmp_path.iterdir()) == []
+
+
+def test_relative_paths_are_planned_and_written_from_the_working_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    Path("kept.cs").write_bytes(b"same")
+    desired = [
+        DesiredFile(Path("kept.cs"), b"same"),
+        DesiredFile(Path("top.cs"), b"top"),
+        DesiredFile(Path("new") / "deeper" / "a.cs", b"a"),
+    ]
+    changes = plan_files(desired)
+    assert [(c.path.as_posix(), c.kind) for c in changes] == [
+        ("kept.cs", ChangeKind.UNCHANGED),
+        ("new/deeper/a.cs", ChangeKind.CREATE),
+        ("top.cs", ChangeKind.CREATE),
+    ]
+    assert write_files(changes) == [Path("new/deeper/a.cs"), Path("top.cs")]
+    assert (tmp_path / "new" / "deeper" / "a.cs").read_bytes() == b"a"
+    assert (tmp_path / "top.cs").read_bytes() == b"top"
+
+
+def test_every_file_in_a_missing_folder_is_a_create_and_a_file_in_the_way_is_still_reported(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "blocker").write_text("a file")
+    inside_missing = [DesiredFile(tmp_path / "gone" / n, b"x") for n in ("a.cs", "b.cs")]
+    assert {c.kind for c in plan_files(inside_missing)} == {ChangeKind.CREATE}
+    with pytest.raises(UserError, match="blocker exists and is not a folder"):
+        plan_files([DesiredFile(tmp_path / "blocker" / "sub" / "a.cs", b"x")])

@@ -132,11 +132,41 @@ def _blocking_ancestor(path: Path, seen: dict[Path, Path | None]) -> Path | None
     return seen[folder]
 
 
-def _change(want: DesiredFile, seen: dict[Path, Path | None]) -> FileChange:
+def _folder_missing(folder: str, missing: dict[str, bool]) -> bool:
+    """Whether ``folder`` is certainly absent, so that nothing inside it exists (POSIX only).
+
+    ENOENT on the folder means no part of its path is a file (that would be ENOTDIR): every
+    file planned inside it is a create, without a system call each. ``missing`` caches by folder.
+    """
+    found = missing.get(folder)
+    if found is None:
+        try:
+            os.stat(folder)
+            found = False
+        except FileNotFoundError:
+            found = os.name == "posix"  # Windows reports a file in the way as not found too
+        except OSError:
+            found = False  # the file's own read explains what is wrong
+        missing[folder] = found
+    return found
+
+
+def _read(name: str) -> bytes:
+    """The whole file, unbuffered (a buffered reader costs more than a small file's read)."""
+    with open(name, "rb", buffering=0) as stream:
+        return stream.readall()
+
+
+def _change(
+    want: DesiredFile, seen: dict[Path, Path | None], missing: dict[str, bool]
+) -> FileChange:
     path = want.path
+    name = os.fspath(path)
+    if _folder_missing(os.path.dirname(name) or ".", missing):
+        return FileChange(path, ChangeKind.CREATE, want.content)
     try:
         # Read first: an existing file settles every question below with one system call.
-        current = path.read_bytes()
+        current = _read(name)
     except OSError as exc:
         if isinstance(exc, FileNotFoundError) and os.name == "posix":
             # ENOENT: nothing there and no ancestor is a file (that would be ENOTDIR), so the
@@ -171,26 +201,37 @@ def plan_files(desired: Iterable[DesiredFile]) -> list[FileChange]:
         if other.content != want.content:
             raise UserError(f"two different contents planned for {want.path}")
     seen: dict[Path, Path | None] = {}
+    missing: dict[str, bool] = {}
     # sorted as Paths sort, by their parts, without Path's slower comparison methods
-    return [_change(by_path[path], seen) for path in sorted(by_path, key=lambda p: p.parts)]
+    return [
+        _change(by_path[path], seen, missing) for path in sorted(by_path, key=lambda p: p.parts)
+    ]
 
 
 # ----- writing: temporary files first, renamed into place at the end -----------------------------
 
 
-def _make_folders(folder: Path, created: list[Path], ready: set[Path]) -> None:
-    """Create ``folder`` and its missing parents, recording each in ``created`` for rollback."""
+def _make_folders(folder: str, created: list[str], ready: set[str]) -> None:
+    """Create ``folder`` and its missing parents, recording each in ``created`` for rollback.
+
+    Paths are strings here and below: this runs for every file written, and pathlib's parsing
+    and hashing cost more than the system calls.
+    """
     if folder in ready:
         return
     missing = []
-    for path in (folder, *folder.parents):
-        if path in ready or path.is_dir():
-            break
+    path = folder
+    while path not in ready and not os.path.isdir(path):
         missing.append(path)
+        parent = os.path.dirname(path) or "."
+        if parent == path:
+            break
+        path = parent
     for path in reversed(missing):
-        path.mkdir()
+        os.mkdir(path)
         created.append(path)
-    ready.update((folder, *missing))
+    ready.add(folder)
+    ready.update(missing)
 
 
 # A temporary file is ``.<target name>.<pid>-<n>.tmp`` beside its target: hidden (Unity does
@@ -198,8 +239,9 @@ def _make_folders(folder: Path, created: list[Path], ready: set[Path]) -> None:
 _TEMP_RE = re.compile(r"^\..+\.(\d+)-\d+\.tmp$")
 
 
-def _temp_name(path: Path, attempt: int) -> Path:
-    return path.with_name(f".{path.name}.{os.getpid()}-{attempt}.tmp")
+def _temp_name(target: str, attempt: int) -> str:
+    folder, name = os.path.split(target)
+    return os.path.join(folder, f".{name}.{os.getpid()}-{attempt}.tmp")
 
 
 def _alive(pid: int) -> bool:
@@ -234,14 +276,14 @@ def temp_leftovers(folders: Iterable[Path]) -> list[Path]:
     return sorted(found)
 
 
-def _write_temp(change: FileChange, durable: bool, chunks: Chunks | None = None) -> Path:
+def _write_temp(change: FileChange, durable: bool, chunks: Chunks | None = None) -> str:
     """``change``'s content (or ``chunks()``) in a new temporary file beside its target, with
     the target's permission bits (what the umask allows for a new file); removed again if this
     fails."""
-    path = change.path
+    target = os.fspath(change.path)
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
     for attempt in itertools.count():
-        temp = _temp_name(path, attempt)
+        temp = _temp_name(target, attempt)
         try:
             # 0o666 less the umask, as open() gives a new file
             handle = os.open(temp, flags, 0o666)
@@ -249,47 +291,54 @@ def _write_temp(change: FileChange, durable: bool, chunks: Chunks | None = None)
         except FileExistsError:
             continue
     try:
-        # Unbuffered: each piece goes straight to write(2). Setting up a buffered writer took
-        # longer than writing a small generated file (about 25 against 11 us on tmpfs).
-        with os.fdopen(handle, "wb", buffering=0) as stream:
+        # Straight to write(2) on the descriptor: setting up a file object took longer than
+        # writing a small generated file.
+        try:
             for piece in chunks() if chunks is not None else (change.content,):
                 rest = memoryview(piece)
-                while rest:  # a raw write may take only part of it
-                    rest = rest[stream.write(rest) :]
+                while rest:  # a write may take only part of it
+                    rest = rest[os.write(handle, rest) :]
             if durable:
                 # On disk before the rename, so that after a power loss the target holds the
                 # old bytes or the new ones. About 2 ms a file on ext4: worth it for a scene,
                 # not for hundreds of generated files that the next apply rewrites anyway.
-                stream.flush()
-                os.fsync(stream.fileno())
-        if change.kind is not ChangeKind.CREATE and path.exists():
-            os.chmod(temp, path.stat().st_mode & 0o7777)
+                os.fsync(handle)
+        finally:
+            os.close(handle)
+        if change.kind is not ChangeKind.CREATE:
+            with contextlib.suppress(FileNotFoundError):
+                os.chmod(temp, os.stat(target).st_mode & 0o7777)
     except BaseException:
-        temp.unlink(missing_ok=True)
+        _remove(temp)
         raise
     return temp
 
 
+def _remove(temp: str) -> None:
+    with contextlib.suppress(FileNotFoundError):
+        os.unlink(temp)
+
+
 def _stage(
     todo: Sequence[FileChange], durable: bool, chunks: Chunks | None = None
-) -> list[tuple[Path, Path]]:
+) -> list[tuple[str, Path]]:
     """Every change written to a temporary file, as ``(temporary, target)`` pairs; on failure,
     the temporary files and the folders made for them are removed again."""
-    created: list[Path] = []
-    temps: list[tuple[Path, Path]] = []
-    ready: set[Path] = set()
+    created: list[str] = []
+    temps: list[tuple[str, Path]] = []
+    ready: set[str] = set()
     current = None
     try:
         for change in todo:
             current = change.path
-            _make_folders(change.path.parent, created, ready)
-            temps.append((_write_temp(change, durable, chunks), change.path))
+            _make_folders(os.path.dirname(os.fspath(current)) or ".", created, ready)
+            temps.append((_write_temp(change, durable, chunks), current))
     except BaseException as exc:
         for temp, _ in temps:
-            temp.unlink(missing_ok=True)
+            _remove(temp)
         for folder in reversed(created):
             with contextlib.suppress(OSError):
-                folder.rmdir()
+                os.rmdir(folder)
         if isinstance(exc, OSError):
             raise UserError(
                 f"cannot write {current}: {exc.strerror}",
@@ -300,13 +349,13 @@ def _stage(
     return temps
 
 
-def _replace_all(temps: Sequence[tuple[Path, Path]]) -> None:
+def _replace_all(temps: Sequence[tuple[str, Path]]) -> None:
     for done, (temp, path) in enumerate(temps):
         try:
             os.replace(temp, path)
         except OSError as exc:
             for leftover, _ in temps[done:]:
-                leftover.unlink(missing_ok=True)
+                _remove(leftover)
             written = f"{done} of {len(temps)} files were already written"
             raise UserError(
                 f"cannot replace {path}: {exc.strerror}; "
@@ -334,7 +383,7 @@ def write_files(
             before_replace()
         except BaseException:
             for temp, _ in temps:
-                temp.unlink(missing_ok=True)
+                _remove(temp)
             raise
     _replace_all(temps)
     return [path for _, path in temps]
