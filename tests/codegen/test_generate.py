@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+from pathlib import PurePath
+
 import pytest
 from codegen_helpers import generate_data
 
 from unityscaffold.codegen import GeneratedCode
+from unityscaffold.codegen._classes import source_name
 from unityscaffold.codegen._views import doc_lines
 from unityscaffold.interfaces.model import Dialect
+from unityscaffold.interfaces.ros1 import parse_message
 
 
 def _text(code: GeneratedCode, path: str) -> str:
@@ -122,3 +126,25 @@ def test_doc_comments_escape_xml_and_drop_blank_ends() -> None:
         "/// </summary>",
     )
     assert doc_lines(()) == ()
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        "/opt/ws/src/pkg/msg/Pose.msg",
+        "pkg/msg/Pose.msg",
+        "Pose.msg",
+        "/Pose.msg",
+        "<string>",
+        "a//msg/Pose.msg",
+        "a/./msg/Pose.msg",
+        "a/msg/./Pose.msg",
+        "a/../msg/Pose.msg",
+        "a/msg/Pose.msg/",
+        "//net/msg/Pose.msg",
+    ],
+)
+def test_the_header_names_the_source_as_pathlib_reads_its_folder_and_file(source: str) -> None:
+    spec = parse_message("int32 a\n", "pkg", "Pose", source)
+    path = PurePath(source)
+    assert source_name(spec) == f"pkg/{path.parent.name}/{path.name}"

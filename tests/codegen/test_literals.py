@@ -6,7 +6,12 @@ import math
 
 import pytest
 
-from unityscaffold.codegen._literals import array_literal, literal, string_literal
+from unityscaffold.codegen._literals import (
+    array_literal,
+    literal,
+    string_literal,
+    zero_literal,
+)
 
 
 @pytest.mark.parametrize(
@@ -43,6 +48,23 @@ def test_strings_escape_quotes_controls_and_non_ascii() -> None:
     assert string_literal("café") == '"caf\\u00E9"'
     assert string_literal("🤖") == '"\\uD83E\\uDD16"'
     assert string_literal("\x01") == '"\\u0001"'
+
+
+def test_printable_ascii_is_its_own_text_except_quote_and_backslash() -> None:
+    for code in range(0x20, 0x7F):
+        char = chr(code)
+        expected = {'"': '\\"', "\\": "\\\\"}.get(char, char)
+        assert string_literal(f"a{char}b") == f'"a{expected}b"'
+    assert string_literal("") == '""'
+    assert string_literal("\x7f") == '"\\u007F"'  # DEL is not printable
+
+
+@pytest.mark.parametrize(
+    "cs_type",
+    ["bool", "sbyte", "byte", "short", "ushort", "int", "uint", "long", "ulong", "float", "double"],
+)
+def test_the_zero_of_each_type_is_its_literal_of_0(cs_type: str) -> None:
+    assert zero_literal(cs_type) == literal(0, cs_type)
 
 
 def test_array_defaults_list_their_values() -> None:

@@ -72,7 +72,7 @@ def _initial(ref: TypeRef, element: str, primitive: str | None, default: object)
     elif primitive == "string":
         single = '""'
     else:
-        single = _literals.literal(0, primitive)
+        single = _literals.zero_literal(primitive)
     if ref.array is ArrayKind.NONE:
         return single
     if ref.array is ArrayKind.FIXED and ref.size:
@@ -98,7 +98,13 @@ def _check(ref: TypeRef, name: str, field_name: str) -> SizeCheck | None:
     return SizeCheck(backing, condition, f"{_literals.string_literal(text)} + value.Length")
 
 
-def _member(ctx: FileContext, refs: References, spec: MessageSpec, field: Field) -> MemberView:
+def _member(
+    ctx: FileContext,
+    refs: References,
+    spec: MessageSpec,
+    field: Field,
+    previous: MemberView | None,
+) -> MemberView:
     ref = field.type
     primitive = primitive_type(ref.base, ctx.dialect)
     cls = _element_class(ctx, ref, spec, field)
@@ -115,10 +121,18 @@ def _member(ctx: FileContext, refs: References, spec: MessageSpec, field: Field)
     except ValueError as exc:
         message = f"default value of '{field.name}': {exc}"
         raise LocatedError.at(_where(spec, field), message) from None
-    return MemberView(name, cs_type, init, doc_lines(field.comment), _check(ref, name, field.name))
+    doc = doc_lines(field.comment)
+    check = _check(ref, name, field.name)
+    # A member with a comment or a checked setter stands apart from its neighbours.
+    spaced = previous is not None and bool(
+        doc or check or previous.doc or previous.check is not None
+    )
+    return MemberView(name, cs_type, init, doc, check, spaced)
 
 
-def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> ConstantView:
+def _constant(
+    ctx: FileContext, spec: MessageSpec, constant: Constant, previous: ConstantView | None
+) -> ConstantView:
     cs_type = primitive_type(constant.type, ctx.dialect)
     where = constant.location or _where(spec)
     if cs_type is None:
@@ -131,7 +145,9 @@ def _constant(ctx: FileContext, spec: MessageSpec, constant: Constant) -> Consta
     except ValueError as exc:
         raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
     name = escape_identifier(constant.name)
-    return ConstantView(name, cs_type, value, doc_lines(constant.comment))
+    doc = doc_lines(constant.comment)
+    spaced = previous is not None and bool(doc or previous.doc)  # a comment stands apart
+    return ConstantView(name, cs_type, value, doc, spaced)
 
 
 # Members of System.Object, which every message class inherits: a field or constant of the same
@@ -189,7 +205,12 @@ def build_message(
     """The view of a message (or service half) ``spec`` as class ``cls``."""
     _check_names(spec, cls.name)
     refs = References(cls.namespace, ctx.known, message_references(ctx, spec))
-    members = tuple(_member(ctx, refs, spec, f) for f in spec.fields)
+    members: list[MemberView] = []
+    for field in spec.fields:
+        members.append(_member(ctx, refs, spec, field, members[-1] if members else None))
+    constants: list[ConstantView] = []
+    for constant in spec.constants:
+        constants.append(_constant(ctx, spec, constant, constants[-1] if constants else None))
     header = FileHeader(source, identity, ctx.define, cls.namespace, refs.usings)
     return MessageView(
         header=header,
@@ -197,7 +218,7 @@ def build_message(
         base=refs.name(ctx.message_base, qualified=ctx.qualify_runtime),
         ros_name=_literals.string_literal(ros_name),
         doc=doc_lines(spec.comment),
-        constants=tuple(_constant(ctx, spec, c) for c in spec.constants),
-        members=members,
+        constants=tuple(constants),
+        members=tuple(members),
         parameters=", ".join(f"{m.cs_type} {m.name}" for m in members),
     )

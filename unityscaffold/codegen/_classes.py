@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from pathlib import PurePath
 
@@ -21,7 +22,7 @@ from unityscaffold.codegen.naming import (
     validate_namespace,
 )
 from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX, ClassRole
-from unityscaffold.errors import LocatedError, SourceLocation, located_at
+from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.interfaces.model import (
     ActionSpec,
     Dialect,
@@ -56,10 +57,15 @@ class ClassEntry:
 
 def source_name(interface: Interface) -> str:
     """``pkg/msg/Name.msg``: the definition file, relative to its package's parent."""
-    if interface.source:
-        path = PurePath(interface.source)
+    source = interface.source
+    if not source:
+        return interface.full_name
+    parts = source.split("/")
+    if os.name == "nt" or "" in parts[1:] or "." in parts:
+        # not a POSIX path in normal form (registry paths are): pathlib reads it
+        path = PurePath(source)
         return f"{interface.package}/{path.parent.name}/{path.name}"
-    return interface.full_name
+    return f"{interface.package}/{parts[-2] if len(parts) > 1 else ''}/{parts[-1]}"
 
 
 def _generated_parts(interface: Interface) -> tuple[MessageSpec, ...]:
@@ -230,8 +236,12 @@ def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
         ros_name: str,
         identity: Interface,
     ) -> ClassEntry:
-        with located_at(SourceLocation(unit.source or unit.full_name)):
+        try:
             check_class_name(name)
+        except UserError:
+            # placed only when it fails: a context manager per class is a cost each one pays
+            with located_at(SourceLocation(unit.source or unit.full_name)):
+                raise
         return ClassEntry(
             unit,
             role,

@@ -8,12 +8,13 @@ for non-finite values, and strings with every character outside printable ASCII 
 from __future__ import annotations
 
 import math
+import re
 import struct
 from collections.abc import Sequence
 
 from unityscaffold.interfaces.model import Scalar
 
-__all__ = ["array_literal", "literal", "string_literal"]
+__all__ = ["array_literal", "literal", "string_literal", "zero_literal"]
 
 _INT_RANGES = {
     "sbyte": (-(2**7), 2**7 - 1),
@@ -39,8 +40,14 @@ _ESCAPES = {
 }
 
 
+# Printable ASCII but the quote and the backslash: such text is its own literal, and most is.
+_PLAIN_TEXT = re.compile(r"[ !#-\[\]-~]*")
+
+
 def string_literal(text: str) -> str:
     """A regular C# string literal; non-ASCII characters become ``\\uXXXX`` (UTF-16 units)."""
+    if _PLAIN_TEXT.fullmatch(text):
+        return f'"{text}"'
     out = []
     for char in text:
         if char in _ESCAPES:
@@ -101,6 +108,15 @@ def literal(value: Scalar, cs_type: str) -> str:
             value = int(value, 0)
         return _int_literal(value, cs_type)
     raise ValueError(f"no C# literal for type {cs_type}")
+
+
+_ZEROS = {cs_type: literal(0, cs_type) for cs_type in ("bool", "float", "double", *_INT_RANGES)}
+
+
+def zero_literal(cs_type: str) -> str:
+    """``literal(0, cs_type)``, looked up: every numeric member's constructor assigns one."""
+    found = _ZEROS.get(cs_type)
+    return found if found is not None else literal(0, cs_type)
 
 
 def array_literal(values: Sequence[Scalar], cs_type: str) -> str:

@@ -42,7 +42,8 @@ class References:
         self, namespace: str, known: KnownClasses, wanted: Iterable[tuple[CsClass, bool]]
     ) -> None:
         self.namespace = namespace
-        wanted = sorted(set(wanted))
+        # CsClass's own ordering, by a key: its generated comparison methods are slow
+        wanted = sorted(set(wanted), key=lambda w: (w[0].namespace, w[0].name, w[1]))
         imported = {c.namespace for c, q in wanted if not q and not self._visible(c)}
         self._names: dict[tuple[CsClass, bool], str] = {}
         usings: set[str] = set()

@@ -46,6 +46,8 @@ def _xml_escape(text: str) -> str:
 
 def doc_lines(comment: tuple[str, ...] | list[str]) -> tuple[str, ...]:
     """A comment as an XML doc ``<summary>``, one ``///`` line per line; () when empty."""
+    if not comment:
+        return ()
     lines = [_xml_escape(line.rstrip()) for line in comment]
     while lines and not lines[-1]:
         lines.pop()
@@ -70,10 +72,13 @@ class FileHeader:
 
 @dataclass(frozen=True, slots=True)
 class ConstantView:
+    """One constant; ``spaced`` when a blank line separates it from the one before."""
+
     name: str
     cs_type: str
     value: str
     doc: tuple[str, ...] = ()
+    spaced: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -87,13 +92,15 @@ class SizeCheck:
 
 @dataclass(frozen=True, slots=True)
 class MemberView:
-    """One auto-property (or a checked property over ``check.field``)."""
+    """One auto-property (or a checked property over ``check.field``); ``spaced`` when a blank
+    line separates it from the one before."""
 
     name: str
     cs_type: str
     init: str
     doc: tuple[str, ...] = ()
     check: SizeCheck | None = None
+    spaced: bool = False
 
 
 @dataclass(frozen=True, slots=True)

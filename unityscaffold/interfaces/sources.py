@@ -149,9 +149,15 @@ def search_roots(
 
 
 def _is_package(path: Path | str) -> bool:
-    # os.path on strings: called for every folder of /usr/share, where Path joins cost more
-    # than the stat
-    return any(os.path.isdir(os.path.join(path, sub)) for sub in _SUBDIRS)
+    # Called for every folder of /usr/share, most of which have none of the three children:
+    # strings joined once, and os.access, which answers "missing" without raising (an
+    # exception per missing child cost isdir more than its system call).
+    prefix = os.path.join(path, "")
+    for sub in _SUBDIRS:
+        child = prefix + sub
+        if os.access(child, os.F_OK) and os.path.isdir(child):
+            return True
+    return False
 
 
 def package_name(path: Path) -> str:
