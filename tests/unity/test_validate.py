@@ -9,8 +9,9 @@ import pytest
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity import _textops
 from unityscaffold.unity._documents import Documents
-from unityscaffold.unity._split import split_text
-from unityscaffold.unity._validate import validate_docs
+from unityscaffold.unity._links import Links
+from unityscaffold.unity._split import Doc, split_text
+from unityscaffold.unity._validate import check_docs, validate_docs
 from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.values import ScriptRef
@@ -107,3 +108,62 @@ def test_the_diff_of_a_large_file_keeps_real_line_numbers() -> None:
     ]
     assert "-line 500\n+line 500 changed\n" in text
     assert diff(old, old, "x") == ""
+
+
+def _edit(docs: Documents, file_id: int, old: str, new: str) -> None:
+    doc = docs.require(file_id)
+    assert old in doc.text
+    _textops.set_text(doc, doc.text.replace(old, new, 1))
+    docs.touch(doc)
+
+
+# Breakage after a clean check, as a faulty edit would leave it (public edits keep files sound).
+BREAKAGE = {
+    "dangling": lambda d: _edit(d, 705507995, "m_Father: {fileID: 0}", "m_Father: {fileID: 42}"),
+    "own-parent": lambda d: _edit(
+        d, 705507995, "m_Father: {fileID: 0}", "m_Father: {fileID: 705507995}"
+    ),
+    "unlisted-component": lambda d: _edit(
+        d, 1259760938, "  - component: {fileID: 1259760941}\n", ""
+    ),
+    "roots": lambda d: _edit(d, 9223372036854775807, "  - {fileID: 705507995}\n", ""),
+    "not-yaml": lambda d: _edit(d, 1259760941, "Topic: test", "Topic: [unclosed"),
+    # the GameObject that still lists it is not edited: only a removal shows it dangles
+    "removed": lambda d: d.remove(d.require(1259760941)),
+    "duplicate": lambda d: d.insert(Doc(114, 1259760939, False, d.require(1259760941).text)),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BREAKAGE))
+def test_a_check_after_a_clean_one_finds_what_a_full_check_finds(case: str) -> None:
+    split = split_text(SOURCE.read_text(), "s.unity")
+    docs = Documents("s.unity", split.prolog, split.docs, split.crlf)
+    clean, checked = check_docs("s.unity", docs.prolog, docs.in_order, docs.changed)
+    assert clean == [] and checked is not None
+    BREAKAGE[case](docs)
+    again, kept = check_docs(
+        "s.unity", docs.prolog, docs.in_order, docs.changed, checked, docs.take_recent()
+    )
+    assert again and kept is None
+    assert again == validate_docs("s.unity", docs.prolog, docs.in_order, docs.changed)
+
+
+def test_a_validation_after_a_clean_one_rereads_only_the_edited_documents(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    reads: list[int] = []
+    full_read = Links.read.__func__  # type: ignore[attr-defined]
+    monkeypatch.setattr(
+        Links,
+        "read",
+        classmethod(lambda cls, docs: reads.append(len(docs)) or full_read(cls, docs)),
+    )
+    scene = SceneDocument.load(SOURCE)
+    assert scene.validate() == [] and reads == [16]
+    scene.ensure_component("Main Camera", SCRIPT, {"SecondsTimeout": 3})
+    scene.ensure_gameobject("Robot/base_link/camera")
+    assert scene.validate() == [] and reads == [16]
+    # a removal is checked in full: something unchanged may still refer to what went
+    scene.remove_component(scene.find_component("Main Camera", SCRIPT.guid))  # type: ignore[arg-type]
+    assert scene.validate() == [] and reads == [16, 22]
+    assert SceneDocument.parse(scene.text(), "s.unity").validate() == []

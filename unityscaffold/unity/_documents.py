@@ -43,6 +43,7 @@ class Documents:
         for doc in docs:
             self._by_id.setdefault(doc.file_id, doc)
         self._changed: set[int] = set()
+        self._recent: set[int] = set()  # the part of _changed since the last take_recent()
         self._revision = 0
         self._hierarchy: Hierarchy | None = None
         # Unity writes scenes sorted by fileID; a file that is not keeps its own order.
@@ -59,6 +60,11 @@ class Documents:
     def changed(self) -> Set[int]:
         """fileIDs of the documents inserted, edited or removed since loading."""
         return self._changed
+
+    def take_recent(self) -> set[int]:
+        """fileIDs inserted, edited or removed since the last call (since loading at first)."""
+        recent, self._recent = self._recent, set()
+        return recent
 
     @property
     def revision(self) -> int:
@@ -134,17 +140,20 @@ class Documents:
         self._docs.insert(index, doc)
         self._by_id[doc.file_id] = doc
         self._changed.add(doc.file_id)
+        self._recent.add(doc.file_id)
         self._revision += 1
 
     def remove(self, doc: Doc) -> None:
         self._docs.remove(doc)
         del self._by_id[doc.file_id]
         self._changed.add(doc.file_id)
+        self._recent.add(doc.file_id)
         self._revision += 1
 
     def touch(self, doc: Doc) -> None:
         """Record that ``doc``'s text was edited in place."""
         self._changed.add(doc.file_id)
+        self._recent.add(doc.file_id)
         self._revision += 1
 
     def invalidate(self) -> None:

@@ -11,16 +11,16 @@ from __future__ import annotations
 import re
 from collections import Counter
 from collections.abc import Collection, Sequence
-from dataclasses import dataclass, field
 
 import yaml
 
 from unityscaffold.errors import Diagnostic, SourceLocation
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
+from unityscaffold.unity._links import Links
 from unityscaffold.unity._split import Doc
 
-__all__ = ["validate_docs"]
+__all__ = ["check_docs", "validate_docs"]
 
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
@@ -66,39 +66,94 @@ def validate_docs(
     path: str, prolog: str, docs: Sequence[Doc], changed: Collection[int] = ()
 ) -> list[Diagnostic]:
     """All problems found, in file order; an empty list means the file may be written."""
-    loc = _Locator(path, prolog, docs)
+    return check_docs(path, prolog, docs, changed)[0]
+
+
+def check_docs(
+    path: str,
+    prolog: str,
+    docs: Sequence[Doc],
+    changed: Collection[int] = (),
+    checked: Links | None = None,
+    recent: Collection[int] = (),
+) -> tuple[list[Diagnostic], Links | None]:
+    """``validate_docs``, plus the link table of a file found clean (None otherwise).
+
+    Given ``checked``, the table of an earlier clean check of the same documents, and
+    ``recent``, the fileIDs inserted, edited or removed since then, only those documents are
+    read again: unchanged ones were found sound and still are, unless an object they refer to
+    was removed (then everything is checked). The checks between objects (owners, parents,
+    cycles, roots) still cover the whole table. Anything found sends it to the full check, so
+    the diagnostics are the same either way.
+    """
     by_id: dict[int, Doc] = {}
-    found: list[Diagnostic] = []
-    counts = Counter(d.file_id for d in docs)
     for doc in docs:
-        if counts[doc.file_id] > 1 and doc.file_id in by_id:
-            found.append(
-                loc.at(
-                    doc,
-                    None,
-                    f"fileID {doc.file_id} is used by more than one object",
-                    hint="every object in a file needs its own fileID",
-                )
-            )
         by_id.setdefault(doc.file_id, doc)
-    del counts
+    unique = len(by_id) == len(docs)
+    if checked is not None and unique and all(i in by_id for i in recent):
+        loc = _Locator(path, prolog, docs)
+        checked.refresh(recent, by_id)
+        again = [by_id[i] for i in recent]
+        if (
+            not _any_dangling(again, by_id)
+            and not _links_problems(loc, checked, by_id, docs)
+            and not any(_parses(loc, doc) for doc in again)
+        ):
+            return [], checked
+    return _check_all(path, prolog, docs, changed, by_id, unique)
+
+
+def _check_all(
+    path: str,
+    prolog: str,
+    docs: Sequence[Doc],
+    changed: Collection[int],
+    by_id: dict[int, Doc],
+    unique: bool,
+) -> tuple[list[Diagnostic], Links | None]:
+    loc = _Locator(path, prolog, docs)
+    found: list[Diagnostic] = []
+    if not unique:
+        seen: set[int] = set()
+        for doc in docs:
+            if doc.file_id in seen:
+                found.append(
+                    loc.at(
+                        doc,
+                        None,
+                        f"fileID {doc.file_id} is used by more than one object",
+                        hint="every object in a file needs its own fileID",
+                    )
+                )
+            seen.add(doc.file_id)
     # reading every reference once is cheap; finding where a dangling one sits is not, so only
     # documents are scanned when something is actually missing
     if _any_dangling(docs, by_id):
         for doc in docs:
             found += _dangling(loc, doc, by_id)
-    links = _Links.read(docs)
-    found += _gameobjects(loc, links, by_id)
-    found += _transforms(loc, links, by_id)
-    found += _cycles(loc, docs, by_id)
-    found += _scene_roots(loc, docs, by_id)
+    links = Links.read(docs)
+    found += _links_problems(loc, links, by_id, docs)
     for doc in docs:
         if doc.file_id in changed:
             found += _parses(loc, doc)
-    return found
+    return found, (links if not found else None)
+
+
+def _links_problems(
+    loc: _Locator, links: Links, by_id: dict[int, Doc], docs: Sequence[Doc]
+) -> list[Diagnostic]:
+    return [
+        *_gameobjects(loc, links, by_id),
+        *_transforms(loc, links, by_id),
+        *_cycles(loc, links, by_id),
+        *_scene_roots(loc, links, docs),
+    ]
 
 
 _BATCH = 1 << 20
+# A guid-less reference to anything but fileID 0 (0 is "none", never dangling): a third of a
+# scene's references are {fileID: 0}, and not making a string of each halves the scan.
+_NONZERO_REF_RE = re.compile(r"\{fileID: (-?0*[1-9]\d*)\}")
 
 
 def _any_dangling(docs: Sequence[Doc], by_id: dict[int, Doc]) -> bool:
@@ -111,16 +166,10 @@ def _any_dangling(docs: Sequence[Doc], by_id: dict[int, Doc]) -> bool:
         batch.append(doc.text)
         size += len(doc.text)
         if size >= _BATCH:
-            spelled.update(F.LOCAL_REF_RE.findall("".join(batch)))
+            spelled.update(_NONZERO_REF_RE.findall("".join(batch)))
             batch, size = [], 0
-    spelled.update(F.LOCAL_REF_RE.findall("".join(batch)))
-    return bool({int(m) for m in spelled} - by_id.keys() - {0})
-
-
-def _is_prefab_instance(doc: Doc) -> bool:
-    """``doc.type_name == "PrefabInstance"`` without slicing the type name out of the text."""
-    text = doc.text
-    return text.startswith("PrefabInstance:", text.index("\n") + 1)
+    spelled.update(_NONZERO_REF_RE.findall("".join(batch)))
+    return bool({int(m) for m in spelled} - by_id.keys())
 
 
 def _key_at(doc: Doc, offset: int) -> str | None:
@@ -142,34 +191,7 @@ def _dangling(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic
     return out
 
 
-@dataclass(slots=True)
-class _Links:
-    """The references that tie objects together, read once per document."""
-
-    owner: dict[int, int] = field(default_factory=dict)  # component → m_GameObject
-    components: dict[int, list[int]] = field(default_factory=dict)  # GameObject → m_Component
-    father: dict[int, int] = field(default_factory=dict)  # Transform → m_Father
-    children: dict[int, list[int]] = field(default_factory=dict)  # Transform → m_Children
-
-    @classmethod
-    def read(cls, docs: Sequence[Doc]) -> _Links:
-        links = cls()
-        for doc in docs:
-            if doc.stripped:
-                continue
-            if doc.class_id == 1:
-                links.components[doc.file_id] = F.list_refs(doc, "m_Component")
-                continue
-            owner = F.ref_value(doc, "m_GameObject")
-            if owner is not None:
-                links.owner[doc.file_id] = owner
-            if doc.class_id in TRANSFORM_CLASSES:
-                links.father[doc.file_id] = F.ref_value(doc, "m_Father") or 0
-                links.children[doc.file_id] = F.list_refs(doc, "m_Children")
-        return links
-
-
-def _gameobjects(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _gameobjects(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
     out = []
     for go_id, components in links.components.items():
         doc = by_id[go_id]
@@ -202,7 +224,7 @@ def _gameobjects(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Di
     return out
 
 
-def _transforms(loc: _Locator, links: _Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _transforms(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
     out = []
     for tr_id, father in links.father.items():
         siblings = links.children.get(father)
@@ -237,37 +259,12 @@ _CYCLE_HINT = (
 )
 
 
-def _parent_links(docs: Sequence[Doc]) -> dict[int, tuple[int, str]]:
-    """Object → (the object above it in the hierarchy, the key saying so).
-
-    A Transform points at its father; a prefab instance's stripped Transform stands for the
-    instance, which points at the Transform it is parented to.
-    """
-    up: dict[int, tuple[int, str]] = {}
-    for doc in docs:
-        if doc.class_id in TRANSFORM_CLASSES:
-            key = "m_PrefabInstance" if doc.stripped else "m_Father"
-            target = F.ref_value(doc, key) or 0
-        elif _is_prefab_instance(doc):
-            key = "m_TransformParent"
-            match = _TRANSFORM_PARENT_RE.search(doc.text)
-            target = int(match.group(1)) if match else 0
-        else:
-            continue
-        if target:
-            up[doc.file_id] = (target, key)
-    return up
-
-
-_TRANSFORM_PARENT_RE = re.compile(r"^    m_TransformParent: \{fileID: (-?\d+)\}", re.M)
-
-
-def _cycles(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _cycles(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
     """Objects that are their own ancestor: a walk down from the roots would never end.
 
     Each object is visited once (three colours), so this is linear in the file's size.
     """
-    up = _parent_links(docs)
+    up = links.up
     state: dict[int, int] = {}  # 1: on the chain being followed, 2: known to end at a root
     out = []
     for start in up:
@@ -289,19 +286,12 @@ def _cycles(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> list[D
     return out
 
 
-def _scene_roots(loc: _Locator, docs: Sequence[Doc], by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _scene_roots(loc: _Locator, links: Links, docs: Sequence[Doc]) -> list[Diagnostic]:
     scene_roots = [d for d in docs if d.class_id == SCENE_ROOTS_CLASS]
     if not scene_roots:
         return []
     listed = F.list_refs(scene_roots[-1], "m_Roots")
-    expected = set()
-    for doc in docs:
-        if (
-            doc.class_id in TRANSFORM_CLASSES
-            and not doc.stripped
-            and not F.ref_value(doc, "m_Father")
-        ) or (_is_prefab_instance(doc) and "\n    m_TransformParent: {fileID: 0}\n" in doc.text):
-            expected.add(doc.file_id)
+    expected = links.roots
     if set(listed) == expected and len(listed) == len(expected):
         return []
     parts = [f"omits root &{i}" for i in sorted(expected - set(listed))]

@@ -21,8 +21,9 @@ from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
 from unityscaffold.unity._fileids import candidate_file_ids
 from unityscaffold.unity._gcpause import gc_paused
+from unityscaffold.unity._links import Links
 from unityscaffold.unity._split import Doc, split_text
-from unityscaffold.unity._validate import validate_docs
+from unityscaffold.unity._validate import check_docs
 from unityscaffold.unity.builtins import BuiltinClass
 from unityscaffold.unity.index import GameObject, Hierarchy, SceneComponent
 from unityscaffold.unity.textdiff import diff
@@ -58,6 +59,7 @@ class SceneDocument:
         # The loaded text as references to the documents' texts (edits replace a document's
         # text, they never change a string): the original costs no copy of the file.
         self._original = [doc.text for doc in docs]
+        self._checked: Links | None = None  # the link table of the last clean validation
 
     @property
     def path(self) -> str:
@@ -127,10 +129,18 @@ class SceneDocument:
         return diff(self.original_text, self.text(), self.path) if self._docs.changed else ""
 
     def validate(self) -> list[Diagnostic]:
-        """Every problem that would make the file unsafe to write (empty list: all good)."""
+        """Every problem that would make the file unsafe to write (empty list: all good).
+
+        After a validation that found nothing, the next one reads again only the documents
+        edited since (see ``check_docs``): apply validates before editing and after.
+        """
         docs = self._docs
+        recent = docs.take_recent()
         with gc_paused():
-            return validate_docs(self.path, docs.prolog, docs.in_order, docs.changed)
+            problems, self._checked = check_docs(
+                self.path, docs.prolog, docs.in_order, docs.changed, self._checked, recent
+            )
+        return problems
 
     def write(self, path: str | Path | None = None) -> bool:
         """Validate, then write atomically if the bytes changed; return whether it wrote."""
