@@ -73,13 +73,32 @@ def test_aliases_merges_and_empty_values_read_as_with_ruamel(
     assert _outcome(text) == _ruamel_only(text, monkeypatch)
 
 
+@pytest.mark.parametrize("tag", ["int", "float", "bool"])
+@pytest.mark.parametrize(
+    ("text", "at"),
+    [("t: !!TAG \n", (1, 4)), ("t: [!!TAG ]\n", (1, 5)), ("t:\n  - !!TAG\n", (2, 5))],
+)
+def test_an_empty_tagged_value_is_refused_at_its_place_both_ways(
+    tag: str, text: str, at: tuple[int, int], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """ruamel's constructors raise IndexError or ValueError on an empty !!int, !!float or
+    !!bool; the reader turns that into a located error, whichever parser read the text."""
+    text = text.replace("TAG", tag)
+    with pytest.raises(LocatedError) as caught:
+        compose(text, "robot.yaml")
+    location = caught.value.location
+    assert (location.line, location.col) == at
+    assert f"invalid {tag} value ''" in caught.value.render()
+    assert _outcome(text) == _ruamel_only(text, monkeypatch)
+
+
 PIECES = st.sampled_from(
     [
         "topics:", "  - ", "- ", "name: ", "/odom", "type: ", "nav_msgs/Odometry", "{", "}",
         "[", "]", ", ", ": ", ":", "yes", "no", "on", "0o17", "017", "0x1F", "1_000", "1e3",
         ".inf", "~", "null", "'q'", '"d\\n"', "&a ", "*a", "<<: ", "? ", "# c", "|", ">",
         "\t", "  ", "\n", "\r\n", "\r", "\x85", "\u2028", "\n  ", "é", "2001-12-14", "-",
-        "!!int ", "%", "---", "...",
+        "!!int ", "!!float ", "!!bool ", "%", "---", "...",
     ]
 )  # fmt: skip
 
