@@ -130,7 +130,41 @@ def test_a_hyphenated_package_is_refused_with_a_hint_that_works(
     code = main(["msgs", "gen", *args, *namespace, "my-pkg/Foo"])
     err = capsys.readouterr().err
     assert code == 2
-    assert "package 'my-pkg' cannot become a C# namespace" in err
+    src = tmp_path / "src" / "my-pkg"
+    assert f"{src}: error: package 'my-pkg' cannot become a C# namespace" in err
     assert "rename the package" in err
     assert "--namespace" not in err
+    assert not out.exists()
+
+
+def test_a_package_name_refused_is_shown_where_package_xml_writes_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    package = tmp_path / "src" / "pkg_folder"
+    (package / "msg").mkdir(parents=True)
+    (package / "msg/Foo.msg").write_text("int32 x\n")
+    (package / "package.xml").write_text("<package>\n  <name>my-pkg</name>\n</package>\n")
+    out = tmp_path / "out"
+    args = ["--ros", "2", "--no-env", "--path", str(tmp_path / "src"), "--out", str(out)]
+    assert main(["msgs", "gen", *args, "my-pkg/msg/Foo"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(
+        f"{package / 'package.xml'}:2:9: error: package 'my-pkg' cannot become a C# namespace"
+    )
+    assert "      <name>my-pkg</name>\n            ^\n" in err
+    assert not out.exists()
+
+
+def test_a_type_name_that_is_no_class_name_is_shown_at_its_file(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "src/pkg/msg").mkdir(parents=True)
+    (tmp_path / "src/pkg/msg/Fo-o.msg").write_text("int32 x\n")
+    out = tmp_path / "out"
+    args = ["--ros", "1", "--no-env", "--path", str(tmp_path / "src"), "--out", str(out)]
+    assert main(["msgs", "gen", *args, "pkg/Fo-o"]) == 2
+    err = capsys.readouterr().err
+    where = tmp_path / "src/pkg/msg/Fo-o.msg"
+    assert err.startswith(f"{where}: error: type name 'Fo-o' cannot become a C# class name")
+    assert "rename the file" in err
     assert not out.exists()

@@ -31,6 +31,7 @@ from unityscaffold.interfaces.model import (
     ServiceSpec,
 )
 from unityscaffold.interfaces.registry import Registry
+from unityscaffold.interfaces.sources import package_name_location
 from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
 
 __all__ = ["ClassEntry", "ClassSet", "collect_classes", "source_name", "unit_key"]
@@ -225,9 +226,16 @@ def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> ClassRole:
 
 
 def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
-    segment = namespace_segment(unit.package)
+    try:
+        segment = namespace_segment(unit.package)
+    except UserError as error:
+        where = package_name_location(unit.source, unit.package)
+        raise LocatedError.at(where, error.message, hint=error.hint) from None
     namespace = f"{root}.{segment}"
     folder = unit.kind.value
+    # a type's name is its file's name
+    with located_at(SourceLocation(unit.source or unit.full_name)):
+        base = class_name(unit.name)
 
     def entry(
         role: ClassRole,
@@ -253,8 +261,7 @@ def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
         )
 
     if isinstance(unit, MessageSpec):
-        return [entry(ClassRole.MESSAGE, unit, class_name(unit.name), unit.full_name, unit)]
-    base = class_name(unit.name)
+        return [entry(ClassRole.MESSAGE, unit, base, unit.full_name, unit)]
     if isinstance(unit, ServiceSpec):
         return [
             entry(role, half, base + CLASS_SUFFIX[role], unit.full_name, half)

@@ -157,7 +157,11 @@ def class_name(ros_name: str) -> str:
     """A ROS type name as a C# class name: its first letter capitalised, as ROS# does."""
     name = ros_name[:1].upper() + ros_name[1:]
     if not is_identifier(name):
-        raise UserError(f"type name '{ros_name}' cannot become a C# class name")
+        raise UserError(
+            f"type name '{ros_name}' cannot become a C# class name",
+            hint="C# names use letters, digits and '_' and do not start with a digit; rename "
+            "the file (ROS type names are CamelCase: letters and digits, a letter first)",
+        )
     return name
 
 

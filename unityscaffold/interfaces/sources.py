@@ -20,6 +20,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from unityscaffold.errors import SourceLocation
 from unityscaffold.interfaces.model import Dialect, InterfaceKind
 
 __all__ = [
@@ -28,6 +29,7 @@ __all__ = [
     "SearchRoot",
     "builtin_root",
     "find_packages",
+    "package_name_location",
     "search_roots",
 ]
 
@@ -168,6 +170,28 @@ def package_name(path: Path) -> str:
         return path.name
     match = _PACKAGE_NAME.search(text)
     return match.group(1) if match else path.name
+
+
+def package_name_location(interface_file: str | None, package: str) -> SourceLocation:
+    """Where the name of the package holding ``interface_file`` (``PKG/msg/Name.msg``) is
+    written: its ``package.xml`` name, with line and column, or else the package folder, whose
+    name it is. For an error about the package name itself; reads the file again on purpose,
+    as only a failing run needs the place."""
+    if interface_file is None:
+        return SourceLocation(package)
+    folder = Path(interface_file).parent.parent
+    manifest = folder / "package.xml"
+    try:
+        text = manifest.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return SourceLocation(str(folder))
+    match = _PACKAGE_NAME.search(text)
+    if match is None:
+        return SourceLocation(str(folder))
+    start = match.start(1)
+    line = text.count("\n", 0, start)
+    col = start - (text.rfind("\n", 0, start) + 1)
+    return SourceLocation(str(manifest), line + 1, col + 1, text.splitlines()[line])
 
 
 def _walk(root: SearchRoot) -> Iterator[Path]:
