@@ -45,7 +45,20 @@ def test_files_of_a_manifest_found_above_are_named_from_the_project(
     run = run_cli("plan")
     assert run.code == 0, run.err
     assert "  create  robot.lock.json\n" in run.out
-    assert ".." not in run.out.split("\n---", 1)[0]
+    header, files = run.out.split("\n---", 1)[0].split("\n", 1)
+    assert header.startswith("../robot.yaml: ")  # the manifest as typed from here
+    assert ".." not in files
+
+
+@pytest.mark.parametrize("given", [None, "../robot.yaml", "../other.yaml"])
+def test_the_plan_header_names_the_manifest_as_the_user_would_type_it(
+    given: str | None, project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (project / "other.yaml").write_text((project / "robot.yaml").read_text())
+    monkeypatch.chdir(project / "Assets")
+    run = run_cli("plan", *([given] if given else []))
+    assert run.code == 0, run.err
+    assert run.out.startswith(f"{given or '../robot.yaml'}: Unity project {project} (ROS 1)\n")
 
 
 def test_the_search_stops_at_the_repository_root(

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import os
 from typing import Any
 
 from unityscaffold.apply.plan import Plan
@@ -11,14 +12,17 @@ from unityscaffold.fileout import ChangeKind
 __all__ = ["plan_diff", "plan_json", "plan_summary"]
 
 
-def plan_summary(plan: Plan, *, verbose: bool = True) -> str:
+def plan_summary(plan: Plan, *, verbose: bool = True, manifest_as: str | None = None) -> str:
+    """The plan in words; its header names the manifest ``manifest_as`` (as the user typed it),
+    by default relative to the current folder."""
     counts = {kind: 0 for kind in ChangeKind}
     for change in plan.changes:
         counts[change.kind] += 1
     m = plan.manifest
     unchanged = counts[ChangeKind.UNCHANGED] + counts[ChangeKind.SKIP]
     lines = [
-        f"{m.path.name}: Unity project {m.project_root} (ROS {int(m.ros)})",
+        f"{manifest_as or os.path.relpath(m.path)}: Unity project {m.project_root} "
+        f"(ROS {int(m.ros)})",
         f"files: {counts[ChangeKind.CREATE]} to create, {counts[ChangeKind.UPDATE]} to update, "
         f"{len(plan.deletions)} to remove, {unchanged} unchanged",
     ]

@@ -31,7 +31,7 @@ RosEnvOption: bool = typer.Option(
 JsonOption: bool = typer.Option(False, "--json", help="Print the plan as JSON for scripts.")
 
 
-def _show(outcome: Outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
+def _show(outcome: Outcome, manifest: Path, *, quiet: bool, as_json: bool, diff: bool) -> None:
     plan = outcome.plan
     if as_json:
         data = plan_json(plan)
@@ -40,7 +40,7 @@ def _show(outcome: Outcome, *, quiet: bool, as_json: bool, diff: bool) -> None:
         typer.echo(json.dumps(data, indent=2))
         return
     if not quiet:
-        typer.echo(plan_summary(plan))
+        typer.echo(plan_summary(plan, manifest_as=str(manifest)))
         if diff:
             text = plan_diff(plan)
             if text:
@@ -123,7 +123,7 @@ def register(app: typer.Typer) -> None:
         outcome = run(
             manifest, mode, force=force, use_environment=ros_env, follow_renames=follow_renames
         )
-        _show(outcome, quiet=quiet, as_json=as_json, diff=dry_run)
+        _show(outcome, manifest, quiet=quiet, as_json=as_json, diff=dry_run)
         if not quiet and not as_json:
             _schema_note(manifest)
         if mode is Mode.CHECK and not (outcome.plan.in_sync and not outcome.plan.conflicts):
@@ -150,7 +150,7 @@ def register(app: typer.Typer) -> None:
         """
         manifest = find_manifest(given)
         outcome = run(manifest, Mode.PLAN, use_environment=ros_env)
-        _show(outcome, quiet=False, as_json=as_json, diff=True)
+        _show(outcome, manifest, quiet=False, as_json=as_json, diff=True)
         if not as_json:
             _schema_note(manifest)
 
