@@ -81,28 +81,52 @@ def test_a_manifest_given_is_used_as_given(project: Path, monkeypatch: pytest.Mo
     assert run.code == 2 and "manifest missing.yaml does not exist" in run.err
 
 
-@pytest.mark.parametrize(
-    "command",
-    [
-        [],
-        ["apply"],
-        ["plan"],
-        ["init"],
-        ["discover"],
-        ["schema"],
-        ["msgs", "list"],
-        ["msgs", "show"],
-        ["msgs", "gen"],
-        ["scene", "ls"],
-        ["scene", "attach"],
-    ],
-    ids=lambda c: " ".join(c) or "scaffold",
-)
+HELPED = [
+    [],
+    ["apply"],
+    ["plan"],
+    ["init"],
+    ["discover"],
+    ["schema"],
+    ["msgs", "list"],
+    ["msgs", "show"],
+    ["msgs", "gen"],
+    ["scene", "ls"],
+    ["scene", "attach"],
+]
+
+
+@pytest.mark.parametrize("command", HELPED, ids=lambda c: " ".join(c) or "scaffold")
 def test_every_command_help_has_examples(command: list[str]) -> None:
     run = run_cli(*command, "--help")
     assert run.code == 0, run.err
     assert "Example" in run.out
     assert f"scaffold {' '.join(command)}".strip() in run.out.split("Example", 1)[1]
+
+
+@pytest.mark.parametrize("command", HELPED, ids=lambda c: " ".join(c) or "scaffold")
+def test_every_help_example_fits_80_columns_indented_on_its_own_lines(
+    command: list[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Each example starts on its own line, indented under 'Examples:', and a long one goes on
+    over lines of its own after a '\\' rather than being wrapped where the terminal ends."""
+    monkeypatch.setenv("COLUMNS", "80")
+    run = run_cli(*command, "--help")
+    block = run.out.split("Example", 1)[1].split("\n", 1)[1].split("╭", 1)[0]
+    lines = [line.rstrip() for line in block.splitlines()]
+    examples, previous = 0, ""
+    for line in lines:
+        assert len(line) <= 80
+        if previous.endswith("\\"):
+            assert line.startswith("       "), line  # the example goes on, further indented
+        elif line.startswith("   scaffold "):
+            examples += 1
+        elif line:
+            # prose after the examples, a paragraph of its own: not the tail of a wrapped one
+            assert previous == "" and not line.startswith("  "), line
+            break
+        previous = line
+    assert examples and not previous.endswith("\\")
 
 
 def test_help_prose_is_one_line_per_paragraph_and_examples_keep_their_lines() -> None:

@@ -72,10 +72,23 @@ def one_line_paragraphs(text: str) -> str:
     return "\n\n".join(paragraphs)
 
 
+def _indent_kept(text: str) -> str:
+    """``text`` with a blank line more after its first paragraph, so typer keeps the examples'
+    indentation.
+
+    typer dedents the paragraphs after the first as one block with ``inspect.cleandoc``, whose
+    first line does not count towards the common indentation: when only examples followed an
+    ``Examples:`` line, they lost their indentation (and differed from one command to the next).
+    An empty first line counts for nothing and is dropped, so the block keeps its margins.
+    """
+    first, _, rest = text.partition("\n\n")
+    return f"{first}\n\n\n{rest}" if rest else text
+
+
 def _reflow_help(command: Any) -> None:
     """Every command's help as ``one_line_paragraphs`` (the click tree typer builds)."""
     if command.help:
-        command.help = one_line_paragraphs(command.help)
+        command.help = _indent_kept(one_line_paragraphs(command.help))
     for sub in getattr(command, "commands", {}).values():
         _reflow_help(sub)
 

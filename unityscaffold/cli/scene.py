@@ -148,8 +148,8 @@ def attach(
 
     Example:
 
-      scaffold scene attach Assets/Scenes/Main.unity -g Robot/lidar
-      --script Assets/Scripts/Lidar.cs --set Range=12.5 --create
+      scaffold scene attach Assets/Scenes/Main.unity -g Robot/lidar \\
+          --script Assets/Scripts/Lidar.cs --set Range=12.5 --create
     """
     ref = _script_ref(script, guid, dll_class)
     pairs = [parse_assignment(a) for a in assignments or []]

@@ -13,12 +13,7 @@ from unityscaffold.resources import schema_text
 def register(app: typer.Typer) -> None:
     """Add ``schema`` to the root app."""
 
-    @app.command(
-        "schema",
-        epilog="Examples:\n\n"
-        "  scaffold schema > robot.schema.json\n\n"
-        "  scaffold schema -o robot.schema.json   # refresh init's copy after an upgrade",
-    )
+    @app.command("schema")
     def schema_command(
         output: Path | None = typer.Option(
             None,
@@ -33,6 +28,12 @@ def register(app: typer.Typer) -> None:
         `scaffold init` writes a copy beside robot.yaml and points the manifest's first line
         (`# yaml-language-server: $schema=robot.schema.json`) at it, so editors with the YAML
         language server check and complete the manifest as you type.
+
+        Examples:
+
+          scaffold schema > robot.schema.json
+
+          scaffold schema -o robot.schema.json      (refresh init's copy)
         """
         text = schema_text()
         if output is None:
