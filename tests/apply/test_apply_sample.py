@@ -103,6 +103,31 @@ def test_removing_a_topic_prunes_its_files_and_component_but_not_edited_user_cod
     assert run_cli("apply", "--check", str(manifest)).code == 0
 
 
+def test_an_edited_message_class_of_a_dropped_type_is_kept_and_said_so_once(sample):
+    manifest = sample / "robot.yaml"
+    messages = sample / "unity" / "Assets" / "RosGenerated" / "Messages" / "Diffbot" / "msg"
+    status = messages / "BaseStatus.cs"
+    status.write_text(status.read_text() + "// mine\n")
+    text = manifest.read_text()
+    without = "\n".join(line for line in text.split("\n") if "/base_status" not in line)
+    manifest.write_text(without)
+    note = "kept Assets/RosGenerated/Messages/Diffbot/msg/BaseStatus.cs: edited since apply"
+    assert note in run_cli("plan", str(manifest)).out  # a plan writes nothing: said again
+    first = run_cli("apply", str(manifest))
+    assert first.code == 0 and note in first.out
+    assert status.exists() and (messages / "BaseStatus.cs.meta").exists()
+    assert not (messages / "WheelState.cs").exists()  # untouched: pruned
+    again = run_cli("apply", str(manifest))
+    assert again.code == 0 and "kept " not in again.out  # said once, not on every run
+    assert run_cli("apply", "--check", str(manifest)).code == 0
+    # Asked for again, then dropped again: a new decision, told again.
+    manifest.write_text(text)
+    assert run_cli("apply", "--force", str(manifest)).code == 0
+    status.write_text(status.read_text() + "// mine\n")
+    manifest.write_text(without)
+    assert note in run_cli("apply", str(manifest)).out
+
+
 def test_a_hand_edited_generated_file_stops_apply_until_forced(sample):
     plumbing = sample / "unity" / "Assets" / "RosGenerated" / "Scripts" / "CmdVelPublisher.cs"
     original = plumbing.read_text()

@@ -36,6 +36,19 @@ def test_render_is_sorted_and_reads_back(tmp_path):
     assert again.files == {"Assets/a.cs": "1", "Assets/b.cs": "2"}
 
 
+def test_kept_files_are_listed_only_when_there_are_some_and_read_back(tmp_path):
+    """A lock from before kept files were recorded has no ``kept`` key, and reads as none."""
+    path = tmp_path / "robot.lock.json"
+    plain = LockFile(files={"Assets/a.cs": "1"})
+    assert '"kept"' not in plain.render()
+    path.write_text(plain.render())
+    assert LockFile.read(path) == plain
+    kept = LockFile(files={"Assets/a.cs": "1"}, kept=frozenset({"Assets/b.cs", "Assets/a.cs"}))
+    assert '"kept": [\n    "Assets/a.cs",\n    "Assets/b.cs"\n  ]' in kept.render()
+    path.write_text(kept.render())
+    assert LockFile.read(path) == kept
+
+
 def test_a_missing_lock_is_empty(tmp_path):
     assert LockFile.read(tmp_path / "none.lock.json") == LockFile()
 
@@ -126,6 +139,12 @@ def _components(*items: str) -> str:
         (
             _lock(_components(), '"gameobjects": {"../S.unity": {}}'),
             f'gameobjects has the key "../S.unity", which is not {_INSIDE}',
+        ),
+        (_lock(_components(), '"kept": {}'), "kept should be a list, found an object"),
+        (_lock(_components(), '"kept": [3]'), "kept[0] should be a string, found the number 3"),
+        (
+            _lock(_components(), '"kept": ["Assets/a.cs", "../a.cs"]'),
+            f'kept[1] should be {_INSIDE}, found the string "../a.cs"',
         ),
     ],
 )

@@ -10,6 +10,10 @@ are relative to the Unity project, so the lock survives moving the project.
 
 A lock written before fileIDs were recorded (no ``gameobjects``, no ``file_id``) still reads:
 such entries are matched by path, as they were then, and the next apply records the fileIDs.
+
+``kept`` lists the files apply would have removed but kept because they were edited by hand; it
+was told once, in the run that kept them, and is not told again while they stay. A lock from
+before it was recorded has none, so such a file is told about once more.
 """
 
 from __future__ import annotations
@@ -184,6 +188,16 @@ def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
     return tuple(found)
 
 
+def _kept(data: dict[str, object]) -> frozenset[str]:
+    entries = data.get("kept", [])
+    if not isinstance(entries, list):
+        raise _wrong("kept", "a list", entries)
+    for index, path in enumerate(entries):
+        if not _inside_assets(_string(path, f"kept[{index}]")):
+            raise _wrong(f"kept[{index}]", _INSIDE_ASSETS, path)
+    return frozenset(entries)
+
+
 def _parse(text: str) -> LockFile:
     """The lock in ``text``; raises ``_Malformed`` or ``ValueError``."""
     data = _object(json.loads(text), "the whole file")
@@ -195,6 +209,7 @@ def _parse(text: str) -> LockFile:
         _asset_map(data, "user_files"),
         _components(data),
         _gameobjects(data),
+        _kept(data),
     )
 
 
@@ -204,6 +219,7 @@ class LockFile:
     user_files: dict[str, str] = field(default_factory=dict)
     components: tuple[LockComponent, ...] = ()
     gameobjects: tuple[LockGameObject, ...] = ()
+    kept: frozenset[str] = frozenset()  # files kept as edited by hand, and told so
 
     def gameobjects_in(self, scene: str) -> dict[str, int]:
         """Path -> fileID of the GameObjects recorded in ``scene``."""
@@ -265,6 +281,7 @@ class LockFile:
                     | {g for g in self.gameobjects if (g.scene, g.path) not in newer}
                 )
             ),
+            self.kept | journal.kept,
         )
 
     def render(self) -> str:
@@ -288,5 +305,7 @@ class LockFile:
                 scene: {g.path: g.file_id for g in sorted(self.gameobjects) if g.scene == scene}
                 for scene in sorted({g.scene for g in self.gameobjects})
             },
+            # only when there are any: locks without kept files read as they did before
+            **({"kept": sorted(self.kept)} if self.kept else {}),
         }
         return json.dumps(data, indent=2, sort_keys=False, ensure_ascii=False) + "\n"

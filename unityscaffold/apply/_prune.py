@@ -13,7 +13,6 @@ from pathlib import Path
 
 from unityscaffold.apply._lock import LockFile, recorded
 from unityscaffold.manifest.model import Manifest
-from unityscaffold.unity.meta import read_meta_guid
 
 __all__ = ["Pruning", "plan_pruning"]
 
@@ -39,14 +38,6 @@ def _untouched(path: Path, digest: str, relative: str, notes: list[str]) -> bool
         return False
 
 
-def _newly_dropped(root: Path, script: str, lock: LockFile) -> bool:
-    """Whether the entry of the generated ``script`` leaves the manifest in this run: its
-    component is still in the lock (the run that prunes it records it no more), so a "kept"
-    note is given once, not on every later run (and always when its GUID cannot be read)."""
-    guid = read_meta_guid(root / (script + ".meta"))
-    return guid is None or any(c.script == guid for c in lock.components)
-
-
 def plan_pruning(
     manifest: Manifest,
     lock: LockFile,
@@ -65,8 +56,7 @@ def plan_pruning(
         state = _untouched(root / relative, digest, relative, result.notes)
         if state is False:
             result.kept_user_files[relative] = digest
-            plumbing = relative[: -len(_USER_SUFFIX)] + ".cs"
-            if _newly_dropped(root, plumbing, lock):
+            if relative not in lock.kept:  # said once, in the run that keeps it
                 result.notes.append(
                     f"kept {relative} (you edited it) and its generated half; delete "
                     "both when you no longer need them"
@@ -83,7 +73,7 @@ def plan_pruning(
         state = _untouched(root / relative, digest, relative, result.notes)
         if state is False:
             result.kept_files[relative] = digest
-            if not relative.endswith(".cs") or _newly_dropped(root, relative, lock):
+            if relative not in lock.kept:
                 result.notes.append(
                     f"kept {relative}: edited since apply made it; delete it yourself if unused"
                 )
