@@ -226,6 +226,7 @@ def _role_of_derived(action: ActionSpec, derived: MessageSpec) -> ClassRole:
 
 
 def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
+    # Both placed only when they fail, as in entry() below.
     try:
         segment = namespace_segment(unit.package)
     except UserError as error:
@@ -233,9 +234,11 @@ def _classes_of(unit: Interface, root: str) -> list[ClassEntry]:
         raise LocatedError.at(where, error.message, hint=error.hint) from None
     namespace = f"{root}.{segment}"
     folder = unit.kind.value
-    # a type's name is its file's name
-    with located_at(SourceLocation(unit.source or unit.full_name)):
+    try:
         base = class_name(unit.name)
+    except UserError:
+        with located_at(SourceLocation(unit.source or unit.full_name)):  # its file's name
+            raise
 
     def entry(
         role: ClassRole,
