@@ -54,11 +54,13 @@ def mcs_compile(
     references: Sequence[Path] = (),
     target: str = "library",
     main: str | None = None,
+    defines: Sequence[str] = (),
 ) -> None:
     """Compile or fail with mcs's output (errors only; third-party warnings are not ours)."""
     args = [mcs, *THIRD_PARTY_FLAGS, f"-target:{target}", f"-out:{out}"]
     if main:
         args.append(f"-main:{main}")
+    args += [f"-define:{d}" for d in defines]
     args += [f"-r:{r}" for r in references]
     args += [str(s) for s in sources]
     done = subprocess.run(args, capture_output=True, text=True, timeout=600, check=False)
@@ -93,5 +95,39 @@ def build_client(
         ],
         assembly,
         references=plugin_references(package),
+    )
+    return assembly
+
+
+STJ_STAND_IN = "SystemTextJsonStandIn.cs"
+
+
+def build_ros2_client(mcs: str, package: Path, out: Path) -> Path:
+    """``out/RosBridgeClient.dll`` compiled with ``-define:ROS2`` (ROS#'s ROS 2 build: its ROS 2
+    message classes and action API), ROS#'s plugin DLLs beside it.
+
+    ROS#'s ROS 2 action consumer reads feedback and results with System.Text.Json's
+    ``JsonSerializer`` whatever serializer is chosen; that DLL cannot run on Debian's Mono (see
+    the module docstring), so ``csharp/SystemTextJsonStandIn.cs`` is compiled in its place.
+    """
+    out.mkdir(parents=True, exist_ok=True)
+    for dll in (package / "Plugins").glob("*.dll"):
+        if dll.name != "System.Text.Json.dll":
+            shutil.copy2(dll, out / dll.name)
+    client = package / "Runtime" / "Libraries" / "RosBridgeClient"
+    sources = [
+        path
+        for path in sorted(client.rglob("*.cs"))
+        if not path.relative_to(client).as_posix().startswith("UrdfTransfer/")
+        and path.name != "MicrosoftSerializer.cs"
+    ]
+    references = [r for r in plugin_references(package) if r.name != "System.Text.Json.dll"]
+    assembly = out / "RosBridgeClient.dll"
+    mcs_compile(
+        mcs,
+        [*sources, *(CSHARP / n for n in ("MicrosoftSerializerUnavailable.cs", STJ_STAND_IN))],
+        assembly,
+        references=references,
+        defines=["ROS2"],
     )
     return assembly

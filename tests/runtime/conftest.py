@@ -12,7 +12,7 @@ import pytest
 from helpers import SYSTEM_PYTHON, require
 
 from tests.runtime.bridge import Bridge, start_bridge, vendor_folder
-from tests.runtime.client import build_client
+from tests.runtime.client import build_client, build_ros2_client
 from tests.runtime.runtime_helpers import (
     SAMPLE_INTERFACES,
     TIME_PRIMITIVES,
@@ -85,6 +85,14 @@ def rossharp_client(
 ) -> Path:
     """ROS#'s RosBridgeClient.dll with its shipped ROS 1 message classes, Plugins beside it."""
     return build_client(mcs, rossharp_package, tmp_path_factory.mktemp("rossharp_client"))
+
+
+@pytest.fixture(scope="session")
+def rossharp_ros2_client(
+    mcs: str, mono: str, rossharp_package: Path, tmp_path_factory: pytest.TempPathFactory
+) -> Path:
+    """ROS#'s RosBridgeClient.dll built for ROS 2 (``-define:ROS2``), Plugins beside it."""
+    return build_ros2_client(mcs, rossharp_package, tmp_path_factory.mktemp("rossharp_ros2"))
 
 
 @pytest.fixture(scope="session")
