@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from pathlib import Path
 
+import jinja2
 import pytest
 
 from unityscaffold import __version__
@@ -60,3 +61,10 @@ def test_the_cache_can_be_turned_off(tmp_path: Path, monkeypatch: pytest.MonkeyP
     monkeypatch.setenv("UNITYSCAFFOLD_NO_CACHE", "1")
     template_environment().get_template(TEMPLATE)
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("name", ["range", "dict", "namespace", "cycler", "joiner", "lipsum"])
+def test_templates_see_only_their_view_not_jinja_globals(name: str) -> None:
+    template = template_environment().from_string(f"{{{{ {name} }}}}")
+    with pytest.raises(jinja2.UndefinedError, match=f"'{name}' is undefined"):
+        template.render(view=None)

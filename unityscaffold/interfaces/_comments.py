@@ -33,7 +33,30 @@ def clean_block(lines: list[str]) -> tuple[str, ...]:
         kept.pop()
     if not kept:
         return ()
-    return tuple(textwrap.dedent("\n".join(kept)).split("\n"))
+    joined = "\n".join(kept)
+    if joined.count("\n") >= len(kept):  # a line holds a line break: textwrap splits it
+        return tuple(textwrap.dedent(joined).split("\n"))
+    return _dedent(kept)
+
+
+def _dedent(lines: list[str]) -> tuple[str, ...]:
+    """``textwrap.dedent`` of lines without line breaks, line by line (a third of its cost):
+    the indent (spaces and tabs) all non-blank lines share is cut, blank lines become empty."""
+    rest = [line.lstrip(" \t") for line in lines]
+    indents = [line[: len(line) - len(r)] for line, r in zip(lines, rest, strict=True) if r]
+    cut = _shared_start(indents)
+    return tuple(line[cut:] if r else "" for line, r in zip(lines, rest, strict=True))
+
+
+def _shared_start(texts: list[str]) -> int:
+    """The length of the start all ``texts`` share (that of the first and last in order)."""
+    if not texts:
+        return 0
+    low, high = min(texts), max(texts)
+    for index, char in enumerate(low):
+        if char != high[index]:
+            return index
+    return len(low)
 
 
 def comment_text(raw: str) -> str:
