@@ -20,7 +20,7 @@ from unityscaffold.codegen.naming import CsClass, escape_identifier
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
 
-__all__ = ["INLINE_ELEMENTS", "FileContext", "build_message", "message_references"]
+__all__ = ["INLINE_ELEMENTS", "FileContext", "build_message"]
 
 INLINE_ELEMENTS = 64
 """A fixed array of messages or strings up to this size is initialised element by element
@@ -103,11 +103,13 @@ def _member(
     refs: References,
     spec: MessageSpec,
     field: Field,
+    cls: CsClass | None,
+    name: str,
     previous: MemberView | None,
 ) -> MemberView:
+    """``field`` as member ``name``; ``cls`` is its element's class (None for a primitive)."""
     ref = field.type
     primitive = primitive_type(ref.base, ctx.dialect)
-    cls = _element_class(ctx, ref, spec, field)
     element = (
         primitive
         if cls is None
@@ -115,7 +117,6 @@ def _member(
     )
     assert element is not None
     cs_type = element + ("[]" if ref.is_array else "")
-    name = escape_identifier(field.name)
     try:
         init = _initial(ref, element, primitive, field.default)
     except ValueError as exc:
@@ -131,7 +132,11 @@ def _member(
 
 
 def _constant(
-    ctx: FileContext, spec: MessageSpec, constant: Constant, previous: ConstantView | None
+    ctx: FileContext,
+    spec: MessageSpec,
+    constant: Constant,
+    name: str,
+    previous: ConstantView | None,
 ) -> ConstantView:
     cs_type = primitive_type(constant.type, ctx.dialect)
     where = constant.location or _where(spec)
@@ -144,7 +149,6 @@ def _constant(
         value = _literals.literal(constant.value, cs_type)
     except ValueError as exc:
         raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
-    name = escape_identifier(constant.name)
     doc = doc_lines(constant.comment)
     spaced = previous is not None and bool(doc or previous.doc)  # a comment stands apart
     return ConstantView(name, cs_type, value, doc, spaced)
@@ -166,7 +170,10 @@ _INHERITED = (
 _INHERITED_NAMES = {name: f"the inherited member {name}()" for name in _INHERITED}
 
 
-def _check_names(spec: MessageSpec, class_name: str) -> None:
+def _check_names(spec: MessageSpec, class_name: str) -> dict[str, str]:
+    """Each field's and constant's C# identifier, by name; a LocatedError for one that has
+    none or clashes."""
+    identifiers: dict[str, str] = {}
     seen = {
         "RosMessageName": "the RosMessageName constant",
         class_name: "the class",
@@ -175,7 +182,7 @@ def _check_names(spec: MessageSpec, class_name: str) -> None:
     items: list[Constant | Field] = [*spec.constants, *spec.fields]
     for item in items:
         try:
-            escape_identifier(item.name)
+            identifiers[item.name] = escape_identifier(item.name)
         except UserError:
             # placed only when it fails: a context manager per field is a cost every class pays
             with located_at(item.location or _where(spec)):
@@ -188,12 +195,15 @@ def _check_names(spec: MessageSpec, class_name: str) -> None:
                 "and none named like a member every class inherits; rename the field",
             )
         seen[item.name] = f"member '{item.name}'"
+    return identifiers
 
 
-def message_references(ctx: FileContext, spec: MessageSpec) -> list[tuple[CsClass, bool]]:
+def _references(
+    ctx: FileContext, spec: MessageSpec, elements: list[CsClass | None]
+) -> list[tuple[CsClass, bool]]:
+    """The classes ``spec``'s file names, given each field's element class (or None)."""
     wanted = [(ctx.message_base, ctx.qualify_runtime)]
-    for field in spec.fields:
-        cls = _element_class(ctx, field.type, spec, field)
+    for field, cls in zip(spec.fields, elements, strict=True):
         if cls is not None:
             wanted.append((cls, ctx.qualify_runtime and field.type.base in ROS1_TIME_TYPES))
     return wanted
@@ -203,14 +213,19 @@ def build_message(
     ctx: FileContext, spec: MessageSpec, cls: CsClass, ros_name: str, source: str, identity: str
 ) -> MessageView:
     """The view of a message (or service half) ``spec`` as class ``cls``."""
-    _check_names(spec, cls.name)
-    refs = References(cls.namespace, ctx.known, message_references(ctx, spec))
+    identifiers = _check_names(spec, cls.name)
+    elements = [_element_class(ctx, f.type, spec, f) for f in spec.fields]
+    refs = References(cls.namespace, ctx.known, _references(ctx, spec, elements))
     members: list[MemberView] = []
-    for field in spec.fields:
-        members.append(_member(ctx, refs, spec, field, members[-1] if members else None))
+    for field, element in zip(spec.fields, elements, strict=True):
+        previous = members[-1] if members else None
+        name = identifiers[field.name]
+        members.append(_member(ctx, refs, spec, field, element, name, previous))
     constants: list[ConstantView] = []
     for constant in spec.constants:
-        constants.append(_constant(ctx, spec, constant, constants[-1] if constants else None))
+        before = constants[-1] if constants else None
+        name = identifiers[constant.name]
+        constants.append(_constant(ctx, spec, constant, name, before))
     header = FileHeader(source, identity, ctx.define, cls.namespace, refs.usings)
     return MessageView(
         header=header,

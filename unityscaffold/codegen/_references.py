@@ -42,27 +42,30 @@ class References:
         self, namespace: str, known: KnownClasses, wanted: Iterable[tuple[CsClass, bool]]
     ) -> None:
         self.namespace = namespace
-        # CsClass's own ordering, by a key: its generated comparison methods are slow
-        wanted = sorted(set(wanted), key=lambda w: (w[0].namespace, w[0].name, w[1]))
-        imported = {c.namespace for c, q in wanted if not q and not self._visible(c)}
-        self._names: dict[tuple[CsClass, bool], str] = {}
+        # Keyed by (namespace, name, qualified): tuples of strings hash and sort in C, a
+        # CsClass through its generated methods. The order is CsClass's own.
+        classes = {(cls.namespace, cls.name, qualified): cls for cls, qualified in wanted}
+        keys = sorted(classes)
+        scope = {namespace} | {
+            ns for ns, _, qualified in keys if not qualified and not self._sees(ns)
+        }
+        self._names: dict[tuple[str, str, bool], str] = {}
         usings: set[str] = set()
-        for cls, qualified in wanted:
-            clash = any(
-                known.defines(other, cls.name)
-                for other in ({namespace} | imported) - {cls.namespace}
-            )
-            if qualified or (clash and cls.namespace != namespace):
-                self._names[(cls, qualified)] = cls.qualified
+        for key in keys:
+            cls_namespace, name, qualified = key
+            clash = any(known.defines(other, name) for other in scope if other != cls_namespace)
+            if qualified or (clash and cls_namespace != namespace):
+                self._names[key] = classes[key].qualified
             else:
-                self._names[(cls, qualified)] = cls.name
-                if not self._visible(cls):
-                    usings.add(cls.namespace)
+                self._names[key] = name
+                if not self._sees(cls_namespace):
+                    usings.add(cls_namespace)
         self.usings: tuple[str, ...] = tuple(sorted(usings))
 
-    def _visible(self, cls: CsClass) -> bool:
-        """Whether ``cls`` is found by name from the file's namespace without a using."""
-        return self.namespace == cls.namespace or self.namespace.startswith(cls.namespace + ".")
+    def _sees(self, namespace: str) -> bool:
+        """Whether classes of ``namespace`` are found by name from the file's namespace
+        without a using."""
+        return self.namespace == namespace or self.namespace.startswith(namespace + ".")
 
     def name(self, cls: CsClass, *, qualified: bool = False) -> str:
-        return self._names[(cls, qualified)]
+        return self._names[(cls.namespace, cls.name, qualified)]
