@@ -23,6 +23,11 @@ _SEPARATOR = "\n--- !u!"
 _HEAD_RE = re.compile(r"(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?:\n|$)")
 _DOC_RE = re.compile(r"\n--- !u!(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?=\n)")
 _REF_ITEMS_RE = re.compile(r"(?:  - \{fileID: -?\d+\}\n)+")
+# A type line, fields with integer values, then one list of references ending the document.
+_LIST_DOC_RE = re.compile(
+    r"[A-Za-z_][A-Za-z0-9_]*:\n(?:  [A-Za-z_][A-Za-z0-9_]*: -?\d+\n)*"
+    r"  [A-Za-z_][A-Za-z0-9_]*:\n(?:  - \{fileID: -?\d+\}\n)+"
+)
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
 
@@ -175,6 +180,8 @@ def _check_complete(text: str, path: str, docs: list[Doc]) -> None:
         )
     last = docs[-1]
     body = last.text[last.text.index("\n") + 1 :]
+    if _LIST_DOC_RE.fullmatch(body):
+        return  # a SceneRoots document as Unity writes it: this shape is always whole YAML
     if len(body) > 65536:
         # a long SceneRoots list: complete item lines up to the final newline show it is whole
         tail = body[body.index("\n", len(body) - 4096) + 1 :]
