@@ -62,9 +62,14 @@ _INT_AT = re.compile(r"-?\d+")
 _ITEMS_AT = re.compile(r"(?:  - .*\n|    .*\n)*")
 
 
+_NEEDLES: dict[str, str] = {}  # key -> its line's start, made once per key, not per read
+
+
 def _key_line(text: str, key: str) -> int:
     """Offset just past ``key:`` on a top-level line, or -1 (str.find beats a regex scan)."""
-    needle = f"\n  {key}:"
+    needle = _NEEDLES.get(key)
+    if needle is None:
+        needle = _NEEDLES[key] = f"\n  {key}:"
     at = text.find(needle)
     while at >= 0:
         end = at + len(needle)
@@ -141,7 +146,7 @@ def list_refs(doc: Doc, key: str) -> list[int]:
         text = doc.text
         at = _key_line(text, key)
         block = _ITEMS_AT.match(text, at + 1) if at >= 0 and text[at] == "\n" else None
-        found = tuple(int(m) for m in _ITEM_REF_RE.findall(block.group(0))) if block else ()
+        found = tuple(map(int, _ITEM_REF_RE.findall(block.group(0)))) if block else ()
         doc.cache[name] = cached = found
     return list(cached)
 

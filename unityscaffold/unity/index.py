@@ -129,10 +129,12 @@ def build_hierarchy(docs: Sequence[Doc], by_id: Mapping[int, Doc]) -> Hierarchy:
 
 
 def _gameobject_node(doc: Doc, by_id: Mapping[int, Doc]) -> Node:
-    components = F.list_refs(doc, "m_Component")
-    transform = next(
-        (c for c in components if c in by_id and by_id[c].class_id in TRANSFORM_CLASSES), None
-    )
+    transform = None
+    for component in F.list_refs(doc, "m_Component"):
+        found = by_id.get(component)
+        if found is not None and found.class_id in TRANSFORM_CLASSES:
+            transform = component
+            break
     source = F.ref_value(doc, "m_CorrespondingSourceObject")
     if source is None:  # before 2018.3
         source = F.ref_value(doc, "m_PrefabParentObject")
@@ -164,25 +166,22 @@ def _unquote(raw: str) -> str:
 
 def _link(nodes: dict[int, Node], owner: dict[int, int], by_id: Mapping[int, Doc]) -> None:
     """Set parents and ordered children from Transforms' m_Father/m_Children."""
+    # one pass for parents and children (neither depends on the other), once per GameObject
     for node in nodes.values():
-        if node.transform_id is None or node.transform_id not in by_id:
+        transform = by_id.get(node.transform_id) if node.transform_id is not None else None
+        if transform is None:
             father = node.parent or 0  # PrefabInstance: its m_TransformParent
         else:
-            transform = by_id[node.transform_id]
             father = F.ref_value(transform, "m_Father") or 0
             root_order = F.field_value(transform, "m_RootOrder")
             if root_order is not None and root_order.lstrip("-").isdigit():
                 node.order = (int(root_order), node.order[1])
-        node.parent = owner.get(father) if father else None
-        if node.parent not in nodes:
-            node.parent = None
-    for node in nodes.values():
-        if node.transform_id is None or node.transform_id not in by_id:
-            continue
-        listed = [
-            owner[c] for c in F.list_refs(by_id[node.transform_id], "m_Children") if c in owner
-        ]
-        node.children = [c for c in dict.fromkeys(listed) if c in nodes]
+            listed = F.list_refs(transform, "m_Children")
+            if listed:
+                below = [owner[c] for c in listed if c in owner]
+                node.children = [c for c in dict.fromkeys(below) if c in nodes]
+        parent = owner.get(father) if father else None
+        node.parent = parent if parent in nodes else None
     for node in nodes.values():  # children that point up but are not listed: keep them visible
         if node.parent is not None and node.file_id not in nodes[node.parent].children:
             nodes[node.parent].children.append(node.file_id)
