@@ -73,12 +73,14 @@ def _runtime_assembly(mcs: str, manifest_path: Path, out: Path, engine: Path) ->
     types use, generated with include_shipped (ROS# ships them precompiled)."""
     manifest = load_manifest(manifest_path)
     registry = load_registry(manifest, use_environment=False)
-    roots = [registry.get(item.type) for item in (*manifest.topics, *manifest.services)]
-    # ROS#'s action base classes use the goal status classes it ships.
+    items = (*manifest.topics, *manifest.services, *manifest.actions)
+    roots = [registry.get(item.type) for item in items]
+    # ROS#'s action base classes use the goal status classes it ships (and the ROS 1 action
+    # scripts its GoalStatusArray).
     status_types = (
         ("action_msgs/msg/GoalInfo", "action_msgs/msg/GoalStatus")
         if manifest.ros == 2
-        else ("actionlib_msgs/GoalID", "actionlib_msgs/GoalStatus")
+        else tuple(f"actionlib_msgs/{name}" for name in ("GoalID", "GoalStatus", "GoalStatusArray"))
     )
     runtime_roots = roots + [registry.get(name) for name in status_types]
     everything = generate(registry, runtime_roots, Options(manifest.ros, include_shipped=True))

@@ -160,6 +160,7 @@ def test_docs_describe_every_key_in_its_section() -> None:
         "connector": "## `connector`",
         "topic": "## `topics`",
         "service": "## `services`",
+        "action": "## `actions`",
         "component": "## `components`",
         "object": "## `objects`",
     }

@@ -17,6 +17,8 @@ from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.naming import ClassClash
 from unityscaffold.codegen.scripts import (
+    ActionClientScript,
+    ActionServerScript,
     PublisherScript,
     ServiceClientScript,
     ServiceServerScript,
@@ -25,27 +27,44 @@ from unityscaffold.codegen.scripts import (
 )
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.fileout import DesiredFile
-from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
+from unityscaffold.interfaces.model import (
+    ActionSpec,
+    Dialect,
+    Interface,
+    InterfaceKind,
+    MessageSpec,
+    ServiceSpec,
+)
 from unityscaffold.interfaces.registry import Registry
-from unityscaffold.manifest.model import Direction, Manifest, Role, Service, Topic
+from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
+from unityscaffold.manifest.model import Action, Direction, Manifest, Role, Service, Topic
 from unityscaffold.unity.meta import folder_meta, meta_guid, monoscript_meta
 from unityscaffold.unity.project import ScriptInfo
 
 __all__ = ["CodePlan", "PlannedScript", "plan_code"]
 
-Script = PublisherScript | SubscriberScript | ServiceClientScript | ServiceServerScript
+Script = (
+    PublisherScript
+    | SubscriberScript
+    | ServiceClientScript
+    | ServiceServerScript
+    | ActionClientScript
+    | ActionServerScript
+)
+Entry = Topic | Service | Action
+_LABEL: dict[type, str] = {Topic: "topic", Service: "service", Action: "action"}
 
 
 @dataclass(frozen=True, slots=True)
 class PlannedScript:
     """One generated MonoBehaviour and where the manifest wants it attached."""
 
-    entry: str  # the manifest entry it serves: "topic /odom", "service /reset"
+    entry: str  # the manifest entry it serves: "topic /odom", "service /reset", "action /dock"
     view: Script
     path: Path
     user_path: Path
     guid: str
-    item: Topic | Service
+    item: Entry
 
 
 @dataclass(frozen=True, slots=True)
@@ -56,25 +75,56 @@ class CodePlan:
     messages: GeneratedCode  # the message, service and action classes (under Messages/)
 
 
-_Spec = TypeVar("_Spec", MessageSpec, ServiceSpec)
+_Spec = TypeVar("_Spec", MessageSpec, ServiceSpec, ActionSpec)
+_WANTED: dict[type, tuple[str, str, str]] = {
+    # kind -> (what, an example, the manifest section)
+    MessageSpec: ("a message", "geometry_msgs/Twist", "topics"),
+    ServiceSpec: ("a service", "std_srvs/Trigger", "services"),
+    ActionSpec: ("an action", "control_msgs/action/GripperCommand", "actions"),
+}
 
 
-def _resolve(registry: Registry, item: Topic | Service, kind: type[_Spec]) -> _Spec:
+def _resolve(registry: Registry, item: Entry, kind: type[_Spec]) -> _Spec:
     where = item.locations.of("type")
     with located_at(where):
         found = registry.get(item.type)
     if not isinstance(found, kind):
-        wanted = "a message" if kind is MessageSpec else "a service"
+        wanted, example, _ = _WANTED[kind]
         raise LocatedError.at(
             where,
-            f"'{item.type}' is a {found.kind.value}, not {wanted}",
-            expected=f"{wanted} type such as "
-            + ("geometry_msgs/Twist" if kind is MessageSpec else "std_srvs/Trigger"),
+            f"'{item.type}' is {_WANTED[type(found)][0]}, not {wanted}",
+            expected=f"{wanted} type such as {example}",
+            hint=_kind_hint(registry, item.type, found, kind),
         )
     return found
 
 
-_Entry = tuple[Topic | Service, MessageSpec | ServiceSpec]
+def _kind_hint(registry: Registry, name: str, found: Interface, kind: type) -> str:
+    """Where the type belongs, or the action a ROS 1 action message is part of."""
+    if kind is ActionSpec and isinstance(found, MessageSpec):
+        owner = _action_of(registry, found)
+        if owner is not None:
+            return (
+                f"'{name}' is a message of the action {owner}; name the action itself: "
+                f"type: {owner}"
+            )
+    spelled = f"{found.package}/action/{found.name}"
+    if kind is ActionSpec and registry.find(spelled) is not None:
+        return f"in ROS 1, pkg/Name means the {found.kind.value}; write {spelled}"
+    return f"list it under '{_WANTED[type(found)][2]}'"
+
+
+def _action_of(registry: Registry, message: MessageSpec) -> str | None:
+    """The action whose messages include ``message`` (ROS 1 ``XActionGoal``...), if any."""
+    for kind, suffix in ROS1_PART_SUFFIXES:
+        if kind is InterfaceKind.ACTION and message.name.endswith(suffix):
+            owner = f"{message.package}/action/{message.name[: -len(suffix)]}"
+            if isinstance(registry.find(owner), ActionSpec):
+                return owner
+    return None
+
+
+_Entry = tuple[Entry, MessageSpec | ServiceSpec | ActionSpec]
 
 # ROS 1 std_msgs types whose ROS# class is a hand-written time primitive of another shape.
 _MISSHAPEN_IN_ROSSHARP = ("std_msgs/Time", "std_msgs/Duration")
@@ -133,8 +183,8 @@ def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> 
 
 def _view(
     manifest: Manifest,
-    item: Topic | Service,
-    spec: MessageSpec | ServiceSpec,
+    item: Entry,
+    spec: MessageSpec | ServiceSpec | ActionSpec,
     messages: GeneratedCode,
 ) -> Script:
     common = {
@@ -155,6 +205,8 @@ def _view(
             throttle=item.throttle or 0,
             queue=item.queue or 1,
         )
+    if isinstance(item, Action):
+        return _action_view(manifest, item, spec, messages)
     classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
     kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
     return kind(
@@ -162,6 +214,26 @@ def _view(
         service=item.name,
         request_type=classes[ClassRole.REQUEST].qualified,
         response_type=classes[ClassRole.RESPONSE].qualified,
+    )
+
+
+def _action_view(
+    manifest: Manifest, item: Action, spec: Interface, messages: GeneratedCode
+) -> Script:
+    classes = messages.classes[f"{spec.package}/action/{spec.name}"]
+    kind = ActionClientScript if item.role is Role.CLIENT else ActionServerScript
+    return kind(
+        class_name=item.class_name,
+        ros_type=f"{spec.package}/action/{spec.name}",
+        manifest=manifest.path.name,
+        action=item.name,
+        ros2=manifest.ros is Dialect.ROS2,
+        goal_type=classes[ClassRole.GOAL].qualified,
+        result_type=classes[ClassRole.RESULT].qualified,
+        feedback_type=classes[ClassRole.FEEDBACK].qualified,
+        action_goal_type=classes[ClassRole.ACTION_GOAL].qualified,
+        action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
+        action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
     )
 
 
@@ -199,7 +271,7 @@ def _check_class_names(
         if not info.path.startswith(ours + "/")
         and not (moves is not None and info.path in moves.owned)
     }
-    items: tuple[Topic | Service, ...] = (*manifest.topics, *manifest.services)
+    items: tuple[Entry, ...] = (*manifest.topics, *manifest.services, *manifest.actions)
     for item in items:
         clash = (
             "ROS#'s stock script"
@@ -230,9 +302,10 @@ def plan_code(
     """Everything the manifest's topics and services need in C#, as desired files; a script
     moved from an earlier output folder keeps its GUIDs (``moves``)."""
     _check_class_names(manifest, scripts, moves)
-    items: list[tuple[Topic | Service, MessageSpec | ServiceSpec]] = []
+    items: list[_Entry] = []
     items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
     items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
+    items += [(a, _resolve(registry, a, ActionSpec)) for a in manifest.actions]
     _check_time_messages(manifest, registry, items)
     messages = _generate(manifest, registry, items)
     messages_dir = manifest.output_dir / "Messages"
@@ -258,8 +331,8 @@ def plan_code(
                 True,
             ),
         ]
-        kind = "topic" if isinstance(item, Topic) else "service"
-        planned.append(PlannedScript(f"{kind} {item.name}", view, path, user_path, guid, item))
+        label = _LABEL[type(item)]
+        planned.append(PlannedScript(f"{label} {item.name}", view, path, user_path, guid, item))
     # Every folder that will hold a planned file needs a folder .meta (the generator's own
     # covers Messages/ and below; these are the ones above it and Scripts/).
     folders = {

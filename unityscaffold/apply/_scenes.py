@@ -25,6 +25,7 @@ from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._typed import check_names, typed_value
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import (
+    Action,
     Component,
     Connector,
     Manifest,
@@ -586,10 +587,11 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
     """Where each scene is named: the item's own ``scene`` key, else the top-level one."""
     found: dict[str, SourceLocation] = {}
-    items: tuple[Connector | Topic | Service | Component | SceneObject, ...] = (
+    items: tuple[Connector | Topic | Service | Action | Component | SceneObject, ...] = (
         manifest.connector,
         *manifest.topics,
         *manifest.services,
+        *manifest.actions,
         *manifest.components,
         *manifest.objects,
     )

@@ -1,4 +1,5 @@
-"""Per-topic and per-service MonoBehaviours for ROS#: a regenerated half and a user half.
+"""Per-topic, per-service and per-action MonoBehaviours for ROS#: a regenerated half and a user
+half.
 
 Each script is a C# partial class split over two files: ``<Class>.cs`` holds the plumbing
 (serialized fields, subscribing, the hand-off to Unity's main thread) and is regenerated freely;
@@ -19,6 +20,8 @@ from unityscaffold.resources import template_environment
 
 __all__ = [
     "SCRIPTS_NAMESPACE",
+    "ActionClientScript",
+    "ActionServerScript",
     "PublisherScript",
     "RenderedScript",
     "ServiceClientScript",
@@ -138,7 +141,82 @@ class ServiceServerScript(_ServiceScript):
         return f"server of {self.service}"
 
 
-Script = PublisherScript | SubscriberScript | ServiceClientScript | ServiceServerScript
+@dataclass(frozen=True, slots=True)
+class _ActionScript(_Script):
+    """An action's script. ROS 2 uses ROS#'s action operations on ``RosSocket``; ROS 1 has
+    none, so its scripts speak actionlib's protocol on the five topics under the name."""
+
+    action: str = ""
+    ros2: bool = False
+    goal_type: str = ""
+    result_type: str = ""
+    feedback_type: str = ""
+    action_goal_type: str = ""
+    action_result_type: str = ""
+    action_feedback_type: str = ""
+
+    @property
+    def action_literal(self) -> str:
+        return csharp_string(self.action)
+
+    @property
+    def goal_short(self) -> str:
+        return self.goal_type.rsplit(".", 1)[-1]
+
+    @property
+    def status_type(self) -> str:
+        """C#'s type of a goal status: actionlib_msgs' is uint8, action_msgs' int8."""
+        return "sbyte" if self.ros2 else "byte"
+
+    @property
+    def status_class(self) -> str:
+        """ROS#'s goal status class, whose constants name the status codes."""
+        if self.ros2:
+            return "RosSharp.RosBridgeClient.MessageTypes.Action.GoalStatus"
+        return "RosSharp.RosBridgeClient.MessageTypes.Actionlib.GoalStatus"
+
+    @property
+    def dialect_suffix(self) -> str:
+        return "Ros2" if self.ros2 else "Ros1"
+
+    def serialized_fields(self) -> list[tuple[str, str | int | float]]:
+        return [("ActionName", self.action)]
+
+
+@dataclass(frozen=True, slots=True)
+class ActionClientScript(_ActionScript):
+    user_template: ClassVar[str] = "rossharp/scripts/ActionClientUser.cs.jinja"
+
+    @property
+    def template(self) -> str:
+        return f"rossharp/scripts/ActionClient{self.dialect_suffix}.cs.jinja"
+
+    @property
+    def what(self) -> str:
+        return f"client of the action {self.action}"
+
+
+@dataclass(frozen=True, slots=True)
+class ActionServerScript(_ActionScript):
+    user_template: ClassVar[str] = "rossharp/scripts/ActionServerUser.cs.jinja"
+
+    @property
+    def template(self) -> str:
+        return f"rossharp/scripts/ActionServer{self.dialect_suffix}.cs.jinja"
+
+    @property
+    def what(self) -> str:
+        return f"server of the action {self.action}"
+
+
+Script = (
+    PublisherScript
+    | SubscriberScript
+    | ServiceClientScript
+    | ServiceServerScript
+    | ActionClientScript
+    | ActionServerScript
+)
 
 
 @dataclass(frozen=True, slots=True)

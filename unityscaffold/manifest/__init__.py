@@ -10,6 +10,7 @@ table as JSON Schema, for editors.
 
 from unityscaffold.manifest.loader import load_manifest, parse_manifest
 from unityscaffold.manifest.model import (
+    Action,
     Component,
     Connector,
     Manifest,
@@ -21,6 +22,7 @@ from unityscaffold.manifest.model import (
 from unityscaffold.manifest.starter import starter_manifest
 
 __all__ = [
+    "Action",
     "Component",
     "Connector",
     "Manifest",

@@ -6,9 +6,11 @@ from collections.abc import Sequence
 
 from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest._read import Reader
-from unityscaffold.manifest.model import Component, SceneObject, Service, Topic
+from unityscaffold.manifest.model import Action, Component, SceneObject, Service, Topic
 
 __all__ = ["check_across"]
+
+Entry = Topic | Service | Action
 
 
 def _graph_name(name: str) -> str:
@@ -16,7 +18,7 @@ def _graph_name(name: str) -> str:
     return "/" + name.lstrip("/")
 
 
-def _duplicates(r: Reader, items: Sequence[Topic | Service], label: str) -> set[int]:
+def _duplicates(r: Reader, items: Sequence[Entry], label: str) -> set[int]:
     """Report every repeat of a name at the repeat; return the indexes of the repeats."""
     first: dict[str, SourceLocation] = {}
     repeats: set[int] = set()
@@ -36,10 +38,10 @@ def _duplicates(r: Reader, items: Sequence[Topic | Service], label: str) -> set[
     return repeats
 
 
-def _class_clashes(r: Reader, items: Sequence[tuple[str, Topic | Service]]) -> None:
+def _class_clashes(r: Reader, items: Sequence[tuple[str, Entry]]) -> None:
     # Compared without case: Unity needs file name == class name, and the file systems of
     # Windows and macOS would merge CmdVelPublisher.cs and CmdvelPublisher.cs.
-    seen: dict[str, tuple[str, Topic | Service]] = {}
+    seen: dict[str, tuple[str, Entry]] = {}
     for label, item in items:
         if not item.class_name:
             continue
@@ -119,13 +121,17 @@ def check_across(
     services: Sequence[Service],
     components: Sequence[Component],
     objects: Sequence[SceneObject] = (),
+    actions: Sequence[Action] = (),
 ) -> None:
-    repeated_topics = _duplicates(r, topics, "topic")
-    repeated_services = _duplicates(r, services, "service")
-    generated: list[tuple[str, Topic | Service]] = [
-        ("topic", t) for i, t in enumerate(topics) if i not in repeated_topics
-    ]
-    generated += [("service", s) for i, s in enumerate(services) if i not in repeated_services]
+    kinds: tuple[tuple[str, Sequence[Entry]], ...] = (
+        ("topic", topics),
+        ("service", services),
+        ("action", actions),
+    )
+    generated: list[tuple[str, Entry]] = []
+    for label, items in kinds:
+        repeated = _duplicates(r, items, label)
+        generated += [(label, item) for i, item in enumerate(items) if i not in repeated]
     _class_clashes(r, generated)
     _component_repeats(r, components)
     _object_repeats(r, objects)

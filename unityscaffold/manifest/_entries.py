@@ -7,12 +7,19 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.fileout import MAX_NAME_BYTES
+from unityscaffold.interfaces.suffixes import (
+    ROS2_ACTION_PARTS,
+    ROS2_FEEDBACK_MESSAGE,
+    ROS2_GET_RESULT,
+    ROS2_SEND_GOAL,
+)
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._fields import read_fields
 from unityscaffold.manifest._paths import project_path
 from unityscaffold.manifest._read import Reader
 from unityscaffold.manifest._yaml import YMap, YNode
 from unityscaffold.manifest.model import (
+    Action,
     Component,
     Direction,
     Locations,
@@ -26,6 +33,7 @@ from unityscaffold.manifest.model import (
 __all__ = [
     "Context",
     "locations",
+    "read_action",
     "read_component",
     "read_gameobject",
     "read_scene",
@@ -37,6 +45,9 @@ EXPECT_NAME = "a ROS name such as /cmd_vel: letters, digits, '_' and '/'"
 EXPECT_GAMEOBJECT = "a hierarchy path such as Robot/base_link"
 EXPECT_SCENE = "a .unity file inside the project, e.g. Assets/Scenes/Main.unity"
 EXPECT_SCRIPT = "a class name such as TwistSubscriber, or a .cs file inside the project"
+EXPECT_MSG_TYPE = "a message type such as geometry_msgs/Twist"
+EXPECT_SRV_TYPE = "a service type such as std_srvs/Trigger"
+EXPECT_ACTION_TYPE = "an action type such as control_msgs/action/GripperCommand"
 
 
 @dataclass(frozen=True, slots=True)
@@ -114,22 +125,62 @@ def _ros_name(r: Reader, m: YMap, ctx: Context) -> str | None:
     return name
 
 
-def _type_hint(m: YMap, wrong_kind: str, where: str) -> str | None:
+_KIND_LABEL = {"msg": "message", "srv": "service", "action": "action"}
+_KIND_SECTION = {"msg": "topics", "srv": "services", "action": "actions"}
+# What rosidl appends to an action's name for the messages and services it derives; ROS 2
+# interface names have no '_', so a name ending in one of these is always such a part.
+_ROS2_ACTION_SUFFIXES = (*ROS2_ACTION_PARTS, ROS2_FEEDBACK_MESSAGE, ROS2_SEND_GOAL, ROS2_GET_RESULT)
+
+
+def _type_value(m: YMap) -> str | None:
     entry = m.get("type")
     value = getattr(entry.value, "value", None) if entry else None
-    if isinstance(value, str) and f"/{wrong_kind}/" in value:
-        return (
-            f"'{value}' is a {'service' if wrong_kind == 'srv' else 'message'} type; "
-            f"list it under '{where}'"
-        )
+    return value if isinstance(value, str) else None
+
+
+def _type_hint(m: YMap, own: str) -> str | None:
+    """A hint for a type of another kind than the section's (``own``: msg, srv or action)."""
+    value = _type_value(m)
+    if value is None:
+        return None
+    for kind, label in _KIND_LABEL.items():
+        if kind != own and f"/{kind}/" in value:
+            if kind == "action" and value.endswith(_ROS2_ACTION_SUFFIXES):
+                return _action_part_hint(value)
+            article = "an" if kind == "action" else "a"
+            return f"'{value}' is {article} {label} type; list it under '{_KIND_SECTION[kind]}'"
     return None
+
+
+def _action_part_hint(value: str) -> str:
+    package, *_, name = value.split("/")
+    owner = name[: name.rindex("_")]
+    return (
+        f"'{value}' is part of the action {package}/action/{owner}, which rosbridge carries as "
+        f"a whole: list {package}/action/{owner} under 'actions' (role: client or server)"
+    )
+
+
+def _no_action_part(r: Reader, m: YMap, ctx: Context, expected: str) -> bool:
+    """False (reported) for a ROS 2 type that names a part of an action, such as the
+    ``X_SendGoal`` service or the ``X_FeedbackMessage`` message, which only the action's own
+    entry can use (rosbridge has no operations for them alone)."""
+    value = _type_value(m)
+    if ctx.ros != 2 or value is None or not value.endswith(_ROS2_ACTION_SUFFIXES):
+        return True
+    if value.count("/") == 2 and value.split("/")[1] == "action":
+        return True  # refused by the section's pattern, with the same hint
+    r.invalid(m.get("type"), expected, hint=_action_part_hint(value))  # type: ignore[arg-type]
+    return False
 
 
 # The longest file a script class gets is its user half's .meta: Name.User.cs.meta.
 _MAX_SCRIPT_CLASS = MAX_NAME_BYTES - len(".User.cs.meta")
 
 
-def _class_name(r: Reader, m: YMap, name: str | None, kind: Direction | Role | None) -> str:
+def _class_name(
+    r: Reader, m: YMap, name: str | None, kind: Direction | Role | None, *, action: bool = False
+) -> str:
     entry = m.get("class")
     if entry is not None:
         value = r.text(m, "class", "a C# class name such as CmdVelPublisher", spec.CLASS_NAME)
@@ -144,7 +195,7 @@ def _class_name(r: Reader, m: YMap, name: str | None, kind: Direction | Role | N
         return value or ""
     if name is None or kind is None:
         return ""
-    derived = default_class_name(name, kind)
+    derived = default_class_name(name, kind, action=action)
     if len(derived) > _MAX_SCRIPT_CLASS:
         r.error(
             m.get("name").value.location,  # type: ignore[union-attr]
@@ -169,10 +220,12 @@ def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:
     type_ = r.text(
         m,
         "type",
-        "a message type such as geometry_msgs/Twist",
+        EXPECT_MSG_TYPE,
         spec.MSG_TYPE,
-        hint=_type_hint(m, "srv", "services"),
+        hint=_type_hint(m, "msg"),
     )
+    if type_ is not None and not _no_action_part(r, m, ctx, EXPECT_MSG_TYPE):
+        type_ = None
     choice = r.choice(m, "direction", [d.value for d in Direction])
     direction = Direction(choice) if choice else None
     rate, throttle, queue = _rates(r, m, direction)
@@ -233,10 +286,12 @@ def read_service(r: Reader, node: YNode, ctx: Context) -> Service | None:
     type_ = r.text(
         m,
         "type",
-        "a service type such as std_srvs/Trigger",
+        EXPECT_SRV_TYPE,
         spec.SRV_TYPE,
-        hint=_type_hint(m, "msg", "topics"),
+        hint=_type_hint(m, "srv"),
     )
+    if type_ is not None and not _no_action_part(r, m, ctx, EXPECT_SRV_TYPE):
+        type_ = None
     choice = r.choice(m, "role", [x.value for x in Role])
     role = Role(choice) if choice else None
     service = Service(
@@ -250,6 +305,27 @@ def read_service(r: Reader, node: YNode, ctx: Context) -> Service | None:
         locations=locations(m),
     )
     return service if name and type_ and role else None
+
+
+def read_action(r: Reader, node: YNode, ctx: Context) -> Action | None:
+    m = r.mapping(node, spec.ACTION)
+    if m is None:
+        return None
+    name = _ros_name(r, m, ctx)
+    type_ = r.text(m, "type", EXPECT_ACTION_TYPE, spec.ACTION_TYPE, hint=_type_hint(m, "action"))
+    choice = r.choice(m, "role", [x.value for x in Role])
+    role = Role(choice) if choice else None
+    action = Action(
+        name=name or "",
+        type=type_ or "",
+        role=role or Role.CLIENT,
+        gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
+        scene=read_scene(r, m, ctx, "action") or "",
+        create=_create(r, m, ctx),
+        class_name=_class_name(r, m, name, role, action=True),
+        locations=locations(m),
+    )
+    return action if name and type_ and role else None
 
 
 def read_component(r: Reader, node: YNode, ctx: Context) -> Component | None:

@@ -31,6 +31,7 @@ ROS_NAME = "^(/[A-Za-z_]|[A-Za-z])[A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*$"
 ROS2_NAME_NOT = "__"
 MSG_TYPE = f"^{_WORD}/(msg/)?{_WORD}$"
 SRV_TYPE = f"^{_WORD}/(srv/)?{_WORD}$"
+ACTION_TYPE = f"^{_WORD}/(action/)?{_WORD}$"
 CLASS_NAME = f"^{CSHARP_IDENTIFIER}$"
 NAMESPACE = f"^{CSHARP_IDENTIFIER}([.]{CSHARP_IDENTIFIER})*$"
 GAMEOBJECT = "^[^/]+(/[^/]+)*$"
@@ -107,6 +108,7 @@ def patterns() -> dict[str, str]:
         "ros_name": ROS_NAME,
         "msg_type": MSG_TYPE,
         "srv_type": SRV_TYPE,
+        "action_type": ACTION_TYPE,
         "class": CLASS_NAME,
         "namespace": NAMESPACE,
         "gameobject": GAMEOBJECT,
@@ -214,7 +216,7 @@ TOP = Section(
         ),
         Key(
             "scene",
-            "Default scene for the connector, topics, services and components, relative "
+            "Default scene for the connector, topics, services, actions and components, relative "
             "to the project. Required unless every entry names its own.",
             _SCENE,
         ),
@@ -231,6 +233,11 @@ TOP = Section(
         ),
         Key("topics", "Topics Unity publishes or subscribes to.", _list_of(_ref("topic"))),
         Key("services", "Services Unity calls or provides.", _list_of(_ref("service"))),
+        Key(
+            "actions",
+            "Actions Unity sends goals to (client) or carries out (server).",
+            _list_of(_ref("action")),
+        ),
         Key(
             "components",
             "Existing MonoBehaviours (yours, ROS#'s or a package's) to add with field values.",
@@ -249,7 +256,7 @@ TOP = Section(
             "then": {
                 "properties": {
                     key: {"items": {"properties": {"name": {"not": {"pattern": ROS2_NAME_NOT}}}}}
-                    for key in ("topics", "services")
+                    for key in ("topics", "services", "actions")
                 }
             },
         },
@@ -381,6 +388,38 @@ SERVICE = Section(
         Key(
             "role",
             "`client` (Unity calls it) or `server` (Unity provides it).",
+            {"enum": [r.value for r in Role]},
+            required=True,
+        ),
+        _item_gameobject("generated script"),
+        _scene_key("GameObject"),
+        _CREATE,
+        _CLASS,
+    ),
+)
+
+ACTION = Section(
+    "action",
+    "action",
+    "An action Unity sends goals to or carries out.",
+    (
+        Key(
+            "name",
+            "ROS action name, e.g. `/dock` (ROS 1: the namespace of its goal, cancel, status, "
+            "feedback and result topics).",
+            {"type": "string", "pattern": ROS_NAME},
+            required=True,
+        ),
+        Key(
+            "type",
+            "Action type, `pkg/action/Name` or `pkg/Name` (ROS 1: the `.action` file's "
+            "name, not its `pkg/NameAction` message).",
+            {"type": "string", "pattern": ACTION_TYPE},
+            required=True,
+        ),
+        Key(
+            "role",
+            "`client` (Unity sends goals) or `server` (Unity carries them out).",
             {"enum": [r.value for r in Role]},
             required=True,
         ),
@@ -537,4 +576,14 @@ OBJECT = Section(
     ),
 )
 
-SECTIONS: tuple[Section, ...] = (TOP, CONNECTOR, TOPIC, SERVICE, COMPONENT, OBJECT, UI, BUILTIN)
+SECTIONS: tuple[Section, ...] = (
+    TOP,
+    CONNECTOR,
+    TOPIC,
+    SERVICE,
+    ACTION,
+    COMPONENT,
+    OBJECT,
+    UI,
+    BUILTIN,
+)

@@ -12,6 +12,7 @@ from unityscaffold.manifest._entries import (
     EXPECT_SCENE,
     Context,
     locations,
+    read_action,
     read_component,
     read_gameobject,
     read_scene,
@@ -122,13 +123,15 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     )
     topics = [read_topic(r, n, ctx) for n in r.items(top, "topics")]
     services = [read_service(r, n, ctx) for n in r.items(top, "services")]
+    actions = [read_action(r, n, ctx) for n in r.items(top, "actions")]
     components = [read_component(r, n, ctx) for n in r.items(top, "components")]
     objects = [read_object(r, n, ctx) for n in r.items(top, "objects")]
     good_topics = tuple(t for t in topics if t is not None)
     good_services = tuple(s for s in services if s is not None)
+    good_actions = tuple(a for a in actions if a is not None)
     good_components = tuple(c for c in components if c is not None)
     good_objects = tuple(o for o in objects if o is not None)
-    check_across(r, good_topics, good_services, good_components, good_objects)
+    check_across(r, good_topics, good_services, good_components, good_objects, good_actions)
     if version is None or ros is None:
         return None
     include = r.boolean(top, "include_shipped")
@@ -149,6 +152,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         components=good_components,
         locations=locations(top),
         objects=good_objects,
+        actions=good_actions,
     )
 
 

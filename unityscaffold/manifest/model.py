@@ -20,6 +20,7 @@ __all__ = [
     "CSHARP_IDENTIFIER",
     "CSHARP_KEYWORDS",
     "MANIFEST_VERSION",
+    "Action",
     "BuiltinComponent",
     "Component",
     "ComponentField",
@@ -195,6 +196,24 @@ class Service:
 
 
 @dataclass(frozen=True, slots=True)
+class Action:
+    """An action Unity sends goals to (client) or carries out (server).
+
+    ``type`` is the action as written (``pkg/action/Name``); the script talks to ROS#'s ROS 2
+    action API, or for ROS 1 to actionlib's topics under ``name`` (``name/goal``, …).
+    """
+
+    name: str
+    type: str
+    role: Role
+    gameobject: str
+    scene: str
+    create: bool
+    class_name: str
+    locations: Locations
+
+
+@dataclass(frozen=True, slots=True)
 class Component:
     """An existing MonoBehaviour to put on a GameObject with the given field values.
 
@@ -294,6 +313,7 @@ class Manifest:
     components: tuple[Component, ...]
     locations: Locations
     objects: tuple[SceneObject, ...] = ()
+    actions: tuple[Action, ...] = ()
 
     @property
     def output(self) -> str:
@@ -317,6 +337,7 @@ class Manifest:
         named = {self.connector.scene}
         named.update(t.scene for t in self.topics)
         named.update(s.scene for s in self.services)
+        named.update(a.scene for a in self.actions)
         named.update(c.scene for c in self.components)
         named.update(o.scene for o in self.objects)
         return tuple(sorted(named))
@@ -349,11 +370,14 @@ def is_csharp_identifier(name: str) -> bool:
     return bool(_IDENTIFIER_RE.fullmatch(name)) and name not in CSHARP_KEYWORDS
 
 
-def default_class_name(name: str, kind: Direction | Role) -> str:
-    """The generated script's class for a topic or service: ``/robot/odom`` → ``RobotOdom…``.
+def default_class_name(name: str, kind: Direction | Role, *, action: bool = False) -> str:
+    """The generated script's class for a topic, service or action: ``/robot/odom`` →
+    ``RobotOdom…``.
 
     Every ``/`` or ``_`` separated word is capitalised (the rest of the word is kept, so
-    ``imuData`` stays ``ImuData``) and the suffix says what the class does.
+    ``imuData`` stays ``ImuData``) and the suffix says what the class does: an action's
+    says ``Action`` too (``/dock`` → ``DockActionClient``), apart from a service's class.
     """
     words = [w for w in re.split(r"[/_]+", name) if w]
-    return "".join(w[0].upper() + w[1:] for w in words) + _SUFFIX[kind]
+    suffix = ("Action" if action else "") + _SUFFIX[kind]
+    return "".join(w[0].upper() + w[1:] for w in words) + suffix

@@ -14,6 +14,13 @@ namespace RosSharp.RosBridgeClient
     public delegate void SubscriptionHandler<T>(T t) where T : Message;
     public delegate void ServiceResponseHandler<T>(T t) where T : Message;
     public delegate bool ServiceCallHandler<Tin, Tout>(Tin tin, out Tout tout) where Tin : Message where Tout : Message;
+#if ROS2
+    public delegate void ActionResultResponseHandler<TActionResult>(TActionResult t) where TActionResult : Message;
+    public delegate void ActionFeedbackResponseHandler<TActionFeedback>(TActionFeedback t) where TActionFeedback : Message;
+    public delegate void ActionCancelResponseHandler<TActionResult>(TActionResult t) where TActionResult : Message;
+    public delegate void SendActionGoalHandler<TActionGoal>(TActionGoal t) where TActionGoal : Message;
+    public delegate void CancelActionGoalHandler(string frameId, string action);
+#endif
 
     public class RosSocket
     {
@@ -32,6 +39,23 @@ namespace RosSharp.RosBridgeClient
         public string CallService<Tin, Tout>(string service, ServiceResponseHandler<Tout> serviceResponseHandler, Tin serviceArguments)
             where Tin : Message where Tout : Message { return service; }
         public void Close(int millisecondsWait = 0) { }
+#if ROS2
+        public string AdvertiseAction<TActionGoal, TActionFeedback, TActionResult>(string action,
+            SendActionGoalHandler<TActionGoal> sendActionGoalHandler, CancelActionGoalHandler cancelActionGoalHandler)
+            where TActionGoal : Message where TActionFeedback : Message where TActionResult : Message { return action; }
+        public void RespondFeedback<TActionFeedback, TFeedback>(string id, TActionFeedback actionFeedback)
+            where TActionFeedback : ActionFeedback<TFeedback> where TFeedback : Message { }
+        public void RespondResult<TActionResult, TResult>(string id, TActionResult ActionResult)
+            where TActionResult : ActionResult<TResult> where TResult : Message { }
+        public void UnadvertiseAction(string id) { }
+        public string CancelActionGoalRequest<TActionResult>(string frameId, string action,
+            ActionCancelResponseHandler<TActionResult> actionCancelResponseHandler) where TActionResult : Message { return action; }
+        public string SendActionGoalRequest<TActionGoal, TGoal, TActionFeedback, TActionResult>(TActionGoal actionGoal,
+            ActionResultResponseHandler<TActionResult> actionResultResponseHandler,
+            ActionFeedbackResponseHandler<TActionFeedback> actionFeedbackResponseHandler)
+            where TActionGoal : ActionGoal<TGoal> where TGoal : Message where TActionResult : Message where TActionFeedback : Message
+        { return actionGoal.action; }
+#endif
     }
 
     public enum RosVersion { ROS1 = 0, ROS2 = 1 }
