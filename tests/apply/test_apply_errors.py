@@ -48,7 +48,7 @@ def test_unknown_type_points_at_the_manifest_and_suggests(sample):
 
 def test_a_service_type_on_a_topic_is_refused(sample):
     _edit(sample, "type: nav_msgs/Odometry", "type: std_srvs/Trigger")
-    _apply_fails(sample, "robot.yaml:19:", "'std_srvs/Trigger' is a srv, not a message")
+    _apply_fails(sample, "robot.yaml:19:", "'std_srvs/Trigger' is a service, not a message")
 
 
 def test_unknown_key_is_refused_with_the_nearest_key(sample):

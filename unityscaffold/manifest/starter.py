@@ -40,6 +40,7 @@ topics:
 services:
 #  - {name: /reset, type: std_srvs/Trigger, role: client}
 
+${actions}
 # Existing MonoBehaviours (yours, ROS#'s or uGUI's) with field values; "@Path/To/Object"
 # refers to a GameObject in the same scene. Add `id:` to have two of one script on one object.
 components:
@@ -56,6 +57,24 @@ objects:
 #    rotation: [0, 90, 0]
 #    components: [Rigidbody, {type: BoxCollider, fields: {m_Size: [0.5, 0.2, 0.8]}}]
 """)
+
+
+# ROS 1's definitions built into unityscaffold include an action (move_base_msgs); ROS 2's
+# standard interfaces have none, so its example needs the action's package in `interfaces`.
+_ACTIONS = {
+    1: """\
+# Each entry: name, type (pkg/action/Name), role (client: Unity sends goals; server: Unity
+# carries them out), gameobject, scene.
+actions:
+#  - {name: /move_base, type: move_base_msgs/action/MoveBase, role: client}
+""",
+    2: """\
+# Each entry: name, type (pkg/action/Name), role (client: Unity sends goals; server: Unity
+# carries them out), gameobject, scene. The action's package goes in `interfaces`, e.g. for
+# {name: /navigate_to_pose, type: nav2_msgs/action/NavigateToPose, role: client}.
+actions:
+""",
+}
 
 
 def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
@@ -79,4 +98,6 @@ def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
         if schema
         else ""
     )
-    return _TEMPLATE.substitute(version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline)
+    return _TEMPLATE.substitute(
+        version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline, actions=_ACTIONS[ros]
+    )

@@ -1,0 +1,123 @@
+"""The scripts generated for ``actions:`` entries: their text (golden files), and that they compile.
+
+ROS 1 scripts compile against ROS#'s real client library (ROS# 2.2.1's RosBridgeClient and
+RosConnector, as the runtime tests build them) and the Unity stand-in. ROS#'s ROS 2 client does
+not compile on Debian's Mono (its action consumer calls System.Text.Json, which needs
+System.Memory), so ROS 2 scripts compile against the runtime stub, whose action operations are
+checked here to be declared exactly as RosSocket.cs declares them.
+
+Regenerate the golden files with ``UNITYSCAFFOLD_UPDATE=1`` and review the diff.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from csharp import MCS_FLAGS, UNITY_STUBS, compile_applied_project
+from helpers import assert_same_tree, require, run_cli, updating
+
+from tests.runtime.bridge import vendor_folder
+from tests.runtime.client import CSHARP, build_client, mcs_compile
+
+REPO = Path(__file__).resolve().parents[2]
+GOLDEN = Path(__file__).parent / "golden" / "actions"
+SAMPLE_INTERFACES = REPO / "sample_project" / "ros_ws" / "src"
+
+MANIFEST = """\
+version: 1
+ros: {ros}
+scene: Assets/Scenes/Main.unity
+interfaces: [ws]
+actions:
+  - {{name: /dock, type: diffbot_msgs/action/Dock, role: client, gameobject: Robot}}
+  - {{name: /charger/dock, type: diffbot_msgs/Dock, role: server, gameobject: Charger}}
+"""
+
+
+def _applied(tmp_path: Path, ros: int) -> Path:
+    project = tmp_path / f"ros{ros}"
+    assert run_cli("init", str(project), "--ros", str(ros)).code == 0
+    shutil.copytree(SAMPLE_INTERFACES, project / "ws")
+    (project / "robot.yaml").write_text(MANIFEST.format(ros=ros), encoding="utf-8")
+    done = run_cli("apply", str(project / "robot.yaml"))
+    assert done.code == 0, done.err
+    assert "add DockActionClient to Robot" in done.out
+    assert "add ChargerDockActionServer to Charger" in done.out
+    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+    return project
+
+
+def _scripts(project: Path, out: Path) -> Path:
+    """The generated scripts (both halves), without their .meta files."""
+    out.mkdir(parents=True)
+    for path in sorted((project / "Assets" / "RosGenerated" / "Scripts").glob("*.cs")):
+        shutil.copy2(path, out / path.name)
+    return out
+
+
+@pytest.mark.parametrize("ros", [1, 2])
+def test_action_scripts_are_the_golden_ones(tmp_path: Path, ros: int) -> None:
+    scripts = _scripts(_applied(tmp_path, ros), tmp_path / "scripts")
+    expected = GOLDEN / f"ros{ros}"
+    if updating():
+        shutil.rmtree(expected, ignore_errors=True)
+        shutil.copytree(scripts, expected)
+    assert_same_tree(scripts, expected)
+
+
+def test_ros1_action_scripts_compile_against_rossharps_client(mcs: str, tmp_path: Path) -> None:
+    package = vendor_folder("UNITYSCAFFOLD_ROSSHARP", "ros-sharp/2.2.1/com.siemens.ros-sharp")
+    require(package, "ROS# 2.2.1's com.siemens.ros-sharp folder (UNITYSCAFFOLD_ROSSHARP)")
+    assert package is not None
+    project = _applied(tmp_path, 1)
+    build = tmp_path / "build"
+    client = build_client(mcs, package, build)
+    engine = build / "UnityEngine.dll"
+    mcs_compile(mcs, [CSHARP / "UnityEngineRuntime.cs"], engine)
+    connector = package / "Runtime" / "RosBridgeClient" / "RosCommunication" / "RosConnector.cs"
+    generated = sorted((project / "Assets" / "RosGenerated").rglob("*.cs"))
+    references = [engine, client, build / "Newtonsoft.Json.dll", build / "websocket-sharp.dll"]
+    # Our flags (warnings as errors), not the third-party ones: the generated code is ours.
+    args = [mcs, *MCS_FLAGS, f"-out:{build / 'Assembly-CSharp.dll'}"]
+    args += [f"-r:{r}" for r in references] + [str(connector), *map(str, generated)]
+    done = subprocess.run(args, capture_output=True, text=True, timeout=600, check=False)
+    assert done.returncode == 0 and "warning" not in done.stdout, done.stdout + done.stderr
+
+
+def test_ros2_action_scripts_compile_against_the_runtime_stub(mcs: str, tmp_path: Path) -> None:
+    project = _applied(tmp_path, 2)
+    compile_applied_project(mcs, project / "robot.yaml", tmp_path / "build", ros2=True)
+
+
+def _declarations(text: str, names: tuple[str, ...]) -> dict[str, str]:
+    """Each named method's declaration up to its body, whitespace collapsed."""
+    found = {}
+    for name in names:
+        match = re.search(rf"public (?:string|void) {name}<[^{{;]*?(?=\{{)", text, re.S)
+        assert match is not None, name
+        spaced = " ".join(match.group(0).split())
+        found[name] = re.sub(r"(?<=\() | (?=[,)])", "", spaced)  # no space inside ( , )
+    return found
+
+
+ROS2_OPERATIONS = (
+    "AdvertiseAction",
+    "RespondFeedback",
+    "RespondResult",
+    "SendActionGoalRequest",
+    "CancelActionGoalRequest",
+)
+
+
+def test_the_stubs_action_operations_are_declared_as_rossharps() -> None:
+    package = vendor_folder("UNITYSCAFFOLD_ROSSHARP", "ros-sharp/2.2.1/com.siemens.ros-sharp")
+    require(package, "ROS# 2.2.1's com.siemens.ros-sharp folder (UNITYSCAFFOLD_ROSSHARP)")
+    assert package is not None
+    real = (package / "Runtime/Libraries/RosBridgeClient/RosSocket.cs").read_text("utf-8-sig")
+    stub = UNITY_STUBS[1].read_text(encoding="utf-8")
+
+    assert _declarations(stub, ROS2_OPERATIONS) == _declarations(real, ROS2_OPERATIONS)
