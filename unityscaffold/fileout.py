@@ -306,8 +306,12 @@ def _write_temp(change: FileChange, durable: bool, chunks: Chunks | None = None)
         finally:
             os.close(handle)
         if change.kind is not ChangeKind.CREATE:
-            with contextlib.suppress(FileNotFoundError):
-                os.chmod(temp, os.stat(target).st_mode & 0o7777)
+            try:
+                mode = os.stat(target).st_mode
+            except FileNotFoundError:
+                mode = None  # gone meanwhile: the new file gets what the umask allows
+            if mode is not None:
+                os.chmod(temp, mode & 0o7777)
     except BaseException:
         _remove(temp)
         raise

@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import NamedTuple
 
-from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
+from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError
 from unityscaffold.interfaces import ros1, ros2
 from unityscaffold.interfaces.model import (
     ActionSpec,
@@ -50,8 +50,8 @@ def _read_text(path: Path) -> str:
     than reading a small interface file. Text that is not UTF-8 is read again the usual way, so
     the error says what it said before.
     """
-    with open(path, "rb") as handle:
-        data = handle.read()
+    with open(path, "rb", buffering=0) as handle:  # no buffered reader for one read
+        data = handle.readall()
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError:
@@ -379,12 +379,15 @@ class Registry:
         for field in message.fields:
             if not field.type.is_message:
                 continue
-            where = field.location or SourceLocation(message.source or message.full_name)
             try:
-                with located_at(where):
-                    dependency = self.field_type(message, field)
+                dependency = self.field_type(message, field)
             except LocatedError as error:
                 problems.extend(error.diagnostics)
+                continue
+            except UserError as error:
+                # placed only when it fails (as located_at would): this runs for every field
+                where = field.location or SourceLocation(message.source or message.full_name)
+                problems.extend(LocatedError.at(where, error.message, hint=error.hint).diagnostics)
                 continue
             self._visit(dependency, found, path, problems)
         path.pop()

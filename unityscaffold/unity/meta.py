@@ -14,6 +14,7 @@ from pathlib import Path, PurePosixPath
 __all__ = ["folder_meta", "guid_for", "meta_guid", "monoscript_meta", "read_meta_guid"]
 
 _GUID_LINE_RE = re.compile(r"^guid: ([0-9a-f]{32})\s*$", re.M)
+_DRIVE_RE = re.compile(r"[A-Za-z]:")  # compiled once: guid_for runs for every generated file
 
 
 def _reserved(guid: str) -> bool:
@@ -24,7 +25,7 @@ def _reserved(guid: str) -> bool:
 def guid_for(salt: str, asset_path: str) -> str:
     """The GUID for ``asset_path`` (project-relative, e.g. ``Assets/Scripts/Foo.cs``)."""
     posix = asset_path.replace("\\", "/")
-    if not posix or posix.startswith("/") or re.match(r"[A-Za-z]:", posix):
+    if not posix or posix.startswith("/") or _DRIVE_RE.match(posix):
         raise ValueError(f"asset path must be relative to the project root: {asset_path!r}")
     parts = posix.split("/")
     # A path with no empty or "." part is already in normal form; PurePosixPath (a tenth of the
