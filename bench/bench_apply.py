@@ -2,13 +2,17 @@
 
 Runs, side by side in one session: apply from clean (generated files, lock and scene wiring
 removed first) and the no-op re-apply, each as a fresh `python -m unityscaffold` process on a
-copy of sample_project. Prints median wall and CPU (user + system) times, beside those of a
-process that only imports the dependencies. Aims: < 0.6 s from clean, < 0.3 s no-op. CPU time
-is the fairer figure on a shared machine.
+copy of sample_project. The first no-op plans and writes the no-op record; the next one
+replays it; "no record" plans with the record turned off (UNITYSCAFFOLD_NO_REPLAY=1). Prints
+median wall and CPU (user + system) times, beside those of a process that only imports the
+dependencies. Aims: < 0.6 s from clean, < 0.3 s no-op. CPU time is the fairer figure on a
+shared machine. Children run this tree, with compiled bytecode and caches in a temporary
+folder.
 
 Then the manifest-size sweep: for N topics of standard ROS 1 types on a fresh `init` project,
-apply (writes everything), the no-op re-apply and `apply --check`, each a whole process, with
-the cost per topic; the cost per topic should stay flat as N grows.
+apply (writes everything), the no-op re-apply (plans, records), the next no-op (replayed), a
+no-op with the record off and `apply --check`, each a whole process, with the cost per topic;
+the cost per topic should stay flat as N grows.
 
 Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...]
 """
@@ -16,6 +20,7 @@ Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...]
 from __future__ import annotations
 
 import argparse
+import os
 import resource
 import shutil
 import statistics
@@ -37,19 +42,35 @@ def reset_to_clean(project: Path) -> None:
     shutil.copy(CLEAN_SCENE, project / "unity" / "Assets" / "Scenes" / "Main.unity")
 
 
-def run_timed(command: list[str], expect: int = 0) -> tuple[float, float]:
+#: The children's environment: this tree first on the path, compiled bytecode kept (under a
+#: prefix in a temporary folder, as an installed package has it; PYTHONDONTWRITEBYTECODE or a
+#: stale __pycache__ would make every run compile every module) and caches (compiled
+#: templates, no-op records) in a temporary folder. Set up by ``main``.
+ENV: dict[str, str] = {}
+
+
+def child_env(work: Path) -> dict[str, str]:
+    env = {**os.environ, "PYTHONPATH": str(REPO), "PYTHONPYCACHEPREFIX": str(work / "pycache")}
+    env["XDG_CACHE_HOME"] = str(work / "cache")
+    for name in ("PYTHONDONTWRITEBYTECODE", "UNITYSCAFFOLD_NO_CACHE", "UNITYSCAFFOLD_NO_REPLAY"):
+        env.pop(name, None)
+    return env
+
+
+def run_timed(command: list[str], expect: int = 0, *, replay: bool = True) -> tuple[float, float]:
     """Wall and CPU (user + system) seconds of one child process."""
+    env = ENV if replay else {**ENV, "UNITYSCAFFOLD_NO_REPLAY": "1"}
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run(command, stdout=subprocess.DEVNULL, check=False)
+    done = subprocess.run(command, stdout=subprocess.DEVNULL, env=env, check=False)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     assert done.returncode == expect, (command, done.returncode)
     return wall, after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
 
 
-def timed_apply(project: Path) -> tuple[float, float]:
-    return timed("apply", "--quiet", str(project / "robot.yaml"))
+def timed_apply(project: Path, *, replay: bool = True) -> tuple[float, float]:
+    return timed("apply", "--quiet", str(project / "robot.yaml"), replay=replay)
 
 
 STANDARD_TYPES = [
@@ -64,16 +85,20 @@ STANDARD_TYPES = [
 ]
 
 
-def timed(*args: str, expect: int = 0) -> tuple[float, float]:
-    return run_timed([sys.executable, "-m", "unityscaffold", *args], expect)
+def timed(*args: str, expect: int = 0, replay: bool = True) -> tuple[float, float]:
+    return run_timed([sys.executable, "-m", "unityscaffold", *args], expect, replay=replay)
+
+
+#: Files changed in the last 50 ms are not trusted by the no-op record; a user's next command
+#: comes later than a script's.
+SETTLE = 0.1
 
 
 def sweep(sizes: list[int]) -> None:
     print("manifest-size sweep, wall (CPU) seconds, and CPU ms per topic")
-    print(
-        f"{'topics':>7} {'apply':>13} {'no-op':>13} {'check':>13}   per topic: "
-        "apply / no-op / check"
-    )
+    print("(no-op: plans and records; replayed: the next no-op; no record: plans, record off)")
+    names = ("apply", "no-op", "replayed", "no record", "check")
+    print(" ".join([f"{'topics':>7}", *(f"{n:>13}" for n in names)]) + "   per topic (CPU ms)")
     for count in sizes:
         with tempfile.TemporaryDirectory() as tmp:
             project = Path(tmp) / "robot"
@@ -81,6 +106,7 @@ def sweep(sizes: list[int]) -> None:
                 [sys.executable, "-m", "unityscaffold", "init", "--ros", "1", str(project)],
                 check=True,
                 stdout=subprocess.DEVNULL,
+                env=ENV,
             )
             manifest = project / "robot.yaml"
             lines = [
@@ -93,10 +119,14 @@ def sweep(sizes: list[int]) -> None:
             text = text.replace("topics:\n", "topics:\n" + "".join(lines), 1)
             manifest.write_text(text, encoding="utf-8")
             apply = timed("apply", "--quiet", str(manifest))
+            time.sleep(SETTLE)
             noop = timed("apply", "--quiet", str(manifest))
+            replayed = timed("apply", "--quiet", str(manifest))
+            plain = timed("apply", "--quiet", str(manifest), replay=False)
             check = timed("apply", "--check", str(manifest))
-            cells = " ".join(f"{f'{w:.2f} ({c:.2f})':>13}" for w, c in (apply, noop, check))
-            per = " / ".join(f"{c / count * 1000:.2f}" for _, c in (apply, noop, check))
+            runs = (apply, noop, replayed, plain, check)
+            cells = " ".join(f"{f'{w:.2f} ({c:.2f})':>13}" for w, c in runs)
+            per = " / ".join(f"{c / count * 1000:.2f}" for _, c in runs)
             print(f"{count:7d} {cells}   {per}", flush=True)
 
 
@@ -118,25 +148,38 @@ def main() -> None:
         "--sizes", type=int, nargs="*", default=[100, 500, 1000, 2000, 4000], help="topics"
     )
     args = parser.parse_args()
-    clean, noop = [], []
-    with tempfile.TemporaryDirectory() as tmp:
-        project = Path(tmp) / "sample_project"
-        shutil.copytree(SAMPLE, project)
-        for _ in range(args.rounds):
-            reset_to_clean(project)
-            clean.append(timed_apply(project))
-            noop.append(timed_apply(project))
+    with tempfile.TemporaryDirectory() as work:
+        ENV.update(child_env(Path(work)))
+        print(f"load average before: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+        sample(args.rounds, Path(work))
+        if args.sizes:
+            sweep(args.sizes)
+        print(f"load average after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+
+
+def sample(rounds: int, work: Path) -> None:
+    clean, noop, replayed, plain = [], [], [], []
+    project = work / "sample_project"
+    shutil.copytree(SAMPLE, project)
+    timed_apply(project)  # uncounted: compiles the bytecode and the templates
+    for _ in range(rounds):
+        reset_to_clean(project)
+        clean.append(timed_apply(project))
+        time.sleep(SETTLE)
+        noop.append(timed_apply(project))
+        replayed.append(timed_apply(project))
+        plain.append(timed_apply(project, replay=False))
     bare, deps = [], []
-    for _ in range(args.rounds):
+    for _ in range(rounds):
         bare.append(run_timed([sys.executable, "-c", "pass"]))
         deps.append(import_cost())
-    print(f"sample project, {args.rounds} rounds")
+    print(f"sample project, {rounds} rounds")
     print(_line("apply from clean", clean, "(aim < 600 ms)"))
-    print(_line("no-op re-apply", noop, "(aim < 300 ms)"))
+    print(_line("no-op re-apply", noop, "(aim < 300 ms; plans, writes the no-op record)"))
+    print(_line("no-op, replayed", replayed, "(the next no-op: the record replayed)"))
+    print(_line("no-op, no record", plain, "(UNITYSCAFFOLD_NO_REPLAY=1: plans)"))
     print(_line("import deps alone", deps, "(jinja2, ruamel.yaml, typer, yaml)"))
     print(_line("bare python start", bare, ""))
-    if args.sizes:
-        sweep(args.sizes)
 
 
 if __name__ == "__main__":

@@ -2,7 +2,8 @@
 
 Bottom up (a package may import from lower layers only, never from a peer or from above):
 
-0. ``errors`` (the one error family) and the package's own ``__init__`` (its version).
+0. ``errors`` (the one error family), ``usercache`` (where caches live) and the package's own
+   ``__init__`` (its version).
 1. ``fileout`` (desired file → change → atomic write; every layer above writes through it)
    and ``resources`` (the package's templates and JSON Schema).
 2. ``interfaces`` (the ROS side) and ``unity`` (the Unity side); neither knows the other.
@@ -25,7 +26,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1] / "unityscaffold"
 
 LAYERS: tuple[frozenset[str], ...] = (
-    frozenset({"errors", ""}),  # "": the package's own __init__
+    frozenset({"errors", "usercache", ""}),  # "": the package's own __init__
     frozenset({"fileout", "resources"}),
     frozenset({"interfaces", "unity"}),
     frozenset({"manifest", "codegen"}),

@@ -24,6 +24,7 @@ import jinja2
 from jinja2.bccache import Bucket, FileSystemBytecodeCache
 
 from unityscaffold import __version__
+from unityscaffold.usercache import cache_root
 
 __all__ = ["rossharp_catalog_text", "schema_text", "template_environment", "template_folder"]
 
@@ -45,15 +46,8 @@ class _UserCache(FileSystemBytecodeCache):
 
 
 def _cache_folder() -> Path | None:
-    if os.environ.get("UNITYSCAFFOLD_NO_CACHE"):
-        return None
-    base = os.environ.get("XDG_CACHE_HOME") or (
-        os.environ.get("LOCALAPPDATA") if os.name == "nt" else None
-    )
-    root = Path(base) if base else Path.home() / ".cache"
-    if not root.is_absolute():
-        return None
-    return root / "unityscaffold" / f"{__version__}-templates"
+    root = cache_root()
+    return Path(root) / f"{__version__}-templates" if root else None
 
 
 @cache

@@ -11,6 +11,7 @@ import typer
 from unityscaffold.apply.init import init_project
 from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
 from unityscaffold.apply.run import Mode, Outcome, run
+from unityscaffold.cli import _noop
 from unityscaffold.cli._options import find_manifest
 from unityscaffold.errors import Exit
 from unityscaffold.manifest.modeline import stale_schema
@@ -58,6 +59,13 @@ def _schema_note(manifest: Path) -> None:
             f"refresh it with `scaffold schema -o {shown}`",
             err=True,
         )
+
+
+def _verified(outcome: Outcome) -> None:
+    """Tell the no-op record when this run found the project in sync and wrote nothing."""
+    plan = outcome.plan
+    if plan.in_sync and not plan.conflicts and not outcome.written and not outcome.deleted:
+        _noop.verified()
 
 
 def _drift_advice(manifest: Path, outcome: Outcome) -> str:
@@ -133,6 +141,7 @@ def register(app: typer.Typer) -> None:
             raise typer.Exit(int(Exit.DRIFT))
         if mode is Mode.APPLY and not quiet and not as_json:
             typer.echo(f"wrote {len(outcome.written)} files, removed {len(outcome.deleted)}")
+        _verified(outcome)
 
     @app.command("plan")
     def plan_command(
@@ -153,6 +162,7 @@ def register(app: typer.Typer) -> None:
         _show(outcome, manifest, quiet=False, as_json=as_json, diff=True)
         if not as_json:
             _schema_note(manifest)
+        _verified(outcome)
 
     @app.command("init")
     def init_command(

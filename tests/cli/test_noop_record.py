@@ -1,0 +1,280 @@
+"""The no-op record: a repeated ``apply``/``plan`` on an unchanged project replays the output
+of the run that verified it, and any change to anything that run read makes it plan again,
+with the same output as a run without the record."""
+
+from __future__ import annotations
+
+import marshal
+import os
+import shutil
+import subprocess
+import sys
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+
+from unityscaffold.cli import _app, _noop, main
+from unityscaffold.resources import template_environment
+
+REPO = Path(__file__).resolve().parents[2]
+SAMPLE = REPO / "sample_project"
+GENERATED = Path("unity/Assets/RosGenerated")
+SCRIPT = GENERATED / "Scripts/ScanSubscriber.cs"
+SCENE = Path("unity/Assets/Scenes/Main.unity")
+
+Result = tuple[int, bytes, bytes]
+
+
+@pytest.fixture
+def sample(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
+    # made beforehand: a run that makes its cache folder changes the folder above it, and
+    # a run that saw something change is not recorded
+    (tmp_path / "cache" / "unityscaffold").mkdir(parents=True)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.delenv("UNITYSCAFFOLD_NO_CACHE", raising=False)
+    monkeypatch.delenv("UNITYSCAFFOLD_NO_REPLAY", raising=False)
+    copy = tmp_path / "sample_project"
+    shutil.copytree(SAMPLE, copy)
+    monkeypatch.chdir(copy)
+    # jinja's environment (and the cache folder it compiles templates into) is made once per
+    # process: made again here, it uses this test's folder, as a command of its own would
+    template_environment.cache_clear()
+    yield copy
+    template_environment.cache_clear()
+
+
+@pytest.fixture
+def planned(monkeypatch: pytest.MonkeyPatch) -> list[list[str]]:
+    """The command lines that were planned, not replayed."""
+    calls: list[list[str]] = []
+    real = _app.run_cli
+
+    def spy(args: list[str]) -> int:
+        calls.append(args)
+        return real(args)
+
+    monkeypatch.setattr(_app, "run_cli", spy)
+    return calls
+
+
+def scaffold(capsysbinary: pytest.CaptureFixture[bytes], *args: str) -> Result:
+    code = main(list(args))
+    captured = capsysbinary.readouterr()
+    return code, captured.out, captured.err
+
+
+def settle() -> None:
+    """Let the file system's clock pass the racy window (the record trusts older files only)."""
+    time.sleep(0.12)
+
+
+def records(sample: Path) -> list[Path]:
+    return sorted((sample.parent / "cache" / "unityscaffold" / "noop").glob("*.rec"))
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("apply",),
+        ("apply", "--quiet"),
+        ("apply", "--check"),
+        ("apply", "--dry-run"),
+        ("apply", "--json"),
+        ("plan",),
+        ("plan", "--json"),
+        ("apply", "robot.yaml"),
+    ],
+)
+def test_a_repeated_no_op_replays_the_same_bytes_without_planning(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], planned: list[list[str]], args
+) -> None:
+    settle()
+    first = scaffold(capsysbinary, *args)
+    assert first[0] == 0 and len(records(sample)) == 1
+    again = scaffold(capsysbinary, *args)
+    assert again == first
+    assert planned == [list(args)]  # the second run was replayed
+
+
+def _append(relative: str | Path, text: str) -> Callable[[Path], None]:
+    def edit(root: Path) -> None:
+        with open(root / relative, "a", encoding="utf-8", newline="") as handle:
+            handle.write(text)
+
+    return edit
+
+
+def _replace(relative: str | Path, old: str, new: str) -> Callable[[Path], None]:
+    def edit(root: Path) -> None:
+        path = root / relative
+        text = path.read_text(encoding="utf-8")
+        assert old in text
+        path.write_text(text.replace(old, new, 1), encoding="utf-8", newline="")
+
+    return edit
+
+
+def _create(relative: str | Path, text: str = "x\n") -> Callable[[Path], None]:
+    def edit(root: Path) -> None:
+        path = root / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+
+    return edit
+
+
+def _remove(relative: str | Path) -> Callable[[Path], None]:
+    return lambda root: (root / relative).unlink()
+
+
+def _same_bytes_again(relative: str | Path) -> Callable[[Path], None]:
+    return lambda root: (root / relative).write_bytes((root / relative).read_bytes())
+
+
+META_LINE = "fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n"
+EDITS: dict[str, Callable[[Path], None]] = {
+    "manifest: a comment": _append("robot.yaml", "# a comment\n"),
+    "manifest: a topic renamed": _replace("robot.yaml", "/scan", "/scan2"),
+    "lock: rewritten with the same bytes": _same_bytes_again("robot.lock.json"),
+    "lock: removed": _remove("robot.lock.json"),
+    "journal of an interrupted run": _create("robot.lock.pending.json", "{}\n"),
+    "interface definition": _append(
+        "ros_ws/src/diffbot_msgs/msg/WheelState.msg", "# a new comment\n"
+    ),
+    "new interface package": _create("ros_ws/src/more_msgs/msg/Extra.msg", "int32 x\n"),
+    "scene": _replace(SCENE, "Robot", "Robot2"),
+    "generated script": _append(SCRIPT, "// mine\n"),
+    "generated script removed": _remove(SCRIPT),
+    "generated .meta": _replace(Path(f"{SCRIPT}.meta"), "guid: ", "guid: 0"),
+    "user half of a script": _append(GENERATED / "Scripts/ScanSubscriber.User.cs", "// mine\n"),
+    "leftover temporary file": _create(GENERATED / "Scripts/.ScanSubscriber.cs.999-0.tmp"),
+    "stray file in the output folder": _create(GENERATED / "Messages/Stray.cs"),
+    "project script with a .meta": _create("unity/Assets/Mine/Mover.cs.meta", META_LINE),
+    "installed package": _create(
+        "unity/Library/PackageCache/com.example.ros@1.0.0/Runtime/Thing.cs.meta", META_LINE
+    ),
+    "project settings": _append("unity/ProjectSettings/ProjectSettings.asset", "\n"),
+    "package manifest": _append("unity/Packages/manifest.json", "\n"),
+    "schema copy the manifest names": _create("../unityscaffold/schema/robot.schema.json", "{}\n"),
+}
+
+
+@pytest.mark.parametrize("what", sorted(EDITS))
+@pytest.mark.parametrize("args", [("apply", "--check"), ("plan",)])
+def test_an_edit_to_anything_the_run_read_makes_it_plan_again_with_the_same_output(
+    sample: Path,
+    capsysbinary: pytest.CaptureFixture[bytes],
+    planned: list[list[str]],
+    monkeypatch: pytest.MonkeyPatch,
+    what: str,
+    args: tuple[str, ...],
+) -> None:
+    settle()
+    assert scaffold(capsysbinary, *args)[0] == 0
+    assert len(records(sample)) == 1
+    EDITS[what](sample)
+    after = scaffold(capsysbinary, *args)
+    assert planned == [list(args)] * 2  # not replayed
+    monkeypatch.setenv("UNITYSCAFFOLD_NO_REPLAY", "1")
+    assert after == scaffold(capsysbinary, *args)
+
+
+def test_an_edit_of_the_same_size_with_the_mtime_set_back_is_still_seen(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], planned: list[list[str]]
+) -> None:
+    script = sample / SCRIPT
+    settle()
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 0
+    before = script.stat()
+    data = script.read_bytes()
+    script.write_bytes(data.replace(b"Scan", b"Scam", 1))
+    os.utime(script, ns=(before.st_atime_ns, before.st_mtime_ns))
+    after = script.stat()
+    assert (after.st_size, after.st_mtime_ns) == (before.st_size, before.st_mtime_ns)
+    code, out, _ = scaffold(capsysbinary, "apply", "--check")
+    assert code == 1 and b"edited by hand" in out
+    assert len(planned) == 2
+
+
+def test_a_run_that_writes_fails_or_is_racy_leaves_no_record(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _append(SCRIPT, "// mine\n")(sample)
+    settle()
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 1  # drift
+    assert scaffold(capsysbinary, "apply", "--force")[0] == 0  # writes
+    assert records(sample) == []
+    settle()
+    # every file counts as changed after the run started: nothing is trusted
+    monkeypatch.setattr(_noop.time, "time_ns", lambda: 0)
+    assert scaffold(capsysbinary, "apply")[0] == 0
+    assert records(sample) == []
+
+
+@pytest.mark.parametrize("variable", ["UNITYSCAFFOLD_NO_CACHE", "UNITYSCAFFOLD_NO_REPLAY"])
+def test_the_record_can_be_turned_off(
+    sample: Path,
+    capsysbinary: pytest.CaptureFixture[bytes],
+    planned: list[list[str]],
+    monkeypatch: pytest.MonkeyPatch,
+    variable: str,
+) -> None:
+    monkeypatch.setenv(variable, "1")
+    settle()
+    first = scaffold(capsysbinary, "apply")
+    assert scaffold(capsysbinary, "apply") == first
+    assert records(sample) == [] and len(planned) == 2
+
+
+def _changed(index: int, value: object) -> Callable[[bytes], bytes]:
+    def damage(data: bytes) -> bytes:
+        record = list(marshal.loads(data))
+        record[index] = value
+        return marshal.dumps(tuple(record))
+
+    return damage
+
+
+@pytest.mark.parametrize(
+    "damage",
+    [
+        lambda data: data[: len(data) // 2],  # cut short
+        lambda data: b"not a record",
+        _changed(0, "another command"),  # the key
+        _changed(1, "zero"),  # the status
+        _changed(2, [(1, 7)]),  # the output
+        _changed(3, [("/", 7)]),  # the paths
+    ],
+)
+def test_a_corrupt_or_foreign_record_means_the_usual_way(
+    sample: Path,
+    capsysbinary: pytest.CaptureFixture[bytes],
+    planned: list[list[str]],
+    damage: Callable[[str], str],
+) -> None:
+    settle()
+    first = scaffold(capsysbinary, "apply")
+    [record] = records(sample)
+    record.write_bytes(damage(record.read_bytes()))
+    assert scaffold(capsysbinary, "apply") == first
+    assert len(planned) == 2
+
+
+def test_a_whole_process_replay_loads_neither_typer_nor_the_pipeline(
+    sample: Path, tmp_path: Path
+) -> None:
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path / "cache")}
+    env["PYTHONPATH"] = os.pathsep.join([str(REPO), env.get("PYTHONPATH", "")])
+    command = [sys.executable, "-X", "importtime", "-m", "unityscaffold", "apply"]
+
+    def scaffold_process() -> subprocess.CompletedProcess[str]:
+        return subprocess.run(command, env=env, capture_output=True, text=True, check=True)
+
+    settle()
+    first = scaffold_process()
+    assert "typer" in first.stderr and "unityscaffold.apply" in first.stderr
+    again = scaffold_process()
+    assert again.stdout == first.stdout
+    assert "typer" not in again.stderr and "unityscaffold.apply" not in again.stderr
