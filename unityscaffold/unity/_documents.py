@@ -9,7 +9,6 @@ methods below: neither module touches the other's internals. Every change goes t
 from __future__ import annotations
 
 import bisect
-import itertools
 from collections.abc import Iterator, Sequence, Set
 
 from unityscaffold.errors import SourceLocation, UserError
@@ -47,7 +46,8 @@ class Documents:
         self._revision = 0
         self._hierarchy: Hierarchy | None = None
         # Unity writes scenes sorted by fileID; a file that is not keeps its own order.
-        self._sorted = all(a.file_id <= b.file_id for a, b in itertools.pairwise(docs))
+        ids = [doc.file_id for doc in docs]
+        self._sorted = ids == sorted(ids)  # sorting a sorted list is one pass in C
 
     # ----- reading ------------------------------------------------------------------------------
 

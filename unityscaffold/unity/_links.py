@@ -45,8 +45,29 @@ class Links:
     @classmethod
     def read(cls, docs: Sequence[Doc]) -> Links:
         links = cls()
+        owner = links.owner
+        special = {1, *TRANSFORM_CLASSES}
         for doc in docs:
-            links._add(doc)
+            # Most documents are components whose only link is their owner: that case is
+            # written out here (this loop runs once per document, 175,000 times in 100 MB),
+            # everything else goes through _add.
+            text = doc.text
+            if (
+                doc.class_id in special
+                or doc.stripped
+                or text.startswith("PrefabInstance:", text.index("\n") + 1)
+            ):
+                links._add(doc)
+                continue
+            at = text.find("\n  m_GameObject:")
+            if at < 0:
+                continue
+            if text.startswith(" {fileID: ", at + 16):
+                match = _INT_RE.match(text, at + 26)
+                if match is not None:
+                    owner[doc.file_id] = int(match.group(0))
+            else:
+                links._add_owner(doc)
         return links
 
     def refresh(self, changed: Collection[int], by_id: Mapping[int, Doc]) -> None:

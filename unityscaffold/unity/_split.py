@@ -70,6 +70,8 @@ def _error(
 
 def detect_crlf(text: str) -> bool:
     """True when every line break is CRLF (git may convert a whole file); mixed files stay LF."""
+    if "\r" not in text:  # a one-character search is many times faster than counting pairs
+        return False
     crlf = text.count("\r\n")
     return crlf > 0 and crlf == text.count("\n")
 

@@ -169,7 +169,7 @@ def _any_dangling(docs: Sequence[Doc], by_id: dict[int, Doc]) -> bool:
             spelled.update(_NONZERO_REF_RE.findall("".join(batch)))
             batch, size = [], 0
     spelled.update(_NONZERO_REF_RE.findall("".join(batch)))
-    return bool({int(m) for m in spelled} - by_id.keys())
+    return not by_id.keys() >= set(map(int, spelled))
 
 
 def _key_at(doc: Doc, offset: int) -> str | None:
