@@ -21,7 +21,9 @@ _SEPARATOR = "\n--- !u!"
 # The type line's line break is looked at, not taken: a document with no fields ends there,
 # and the next header's leading line break must still be there to be found.
 _HEAD_RE = re.compile(r"(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?:\n|$)")
-_DOC_RE = re.compile(r"\n--- !u!(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?=\n)")
+# Every "\n---" in the file, with its groups set only where a well-formed header follows: the
+# one scan that finds the documents also finds any line that looks like a header and is not.
+_DOC_RE = re.compile(r"\n---(?: !u!(\d+) &(-?\d+)( stripped)?\n[A-Za-z_][A-Za-z0-9_]*:(?=\n))?")
 _REF_ITEMS_RE = re.compile(r"(?:  - \{fileID: -?\d+\}\n)+")
 # A type line, fields with integer values, then one list of references ending the document.
 _LIST_DOC_RE = re.compile(
@@ -132,12 +134,14 @@ def _split_whole(text: str) -> SplitFile | None:
     # three group() calls, and the cache given rather than made by the default factory, take
     # a quarter off the split.
     for match in _DOC_RE.finditer(text):
+        class_text, file_text, strip = match.groups()
+        if class_text is None:
+            return None
         if start >= 0:
             docs.append(Doc(class_id, file_id, stripped, text[start : match.start() + 1], {}))
         start = match.start() + 1
-        class_text, file_text, strip = match.groups()
         class_id, file_id, stripped = int(class_text), int(file_text), strip is not None
-    if start < 0 or len(docs) + 1 != text.count("\n---"):
+    if start < 0:
         return None
     docs.append(Doc(class_id, file_id, stripped, text[start:], {}))
     prolog = text[: text.index(_SEPARATOR) + 1]
