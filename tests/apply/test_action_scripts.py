@@ -1,9 +1,8 @@
 """The scripts generated for ``actions:`` entries: their text (golden files), and that they compile.
 
-ROS 1 scripts compile against ROS#'s real client library (ROS# 2.2.1's RosBridgeClient and
-RosConnector, as the runtime tests build them) and the Unity stand-in. ROS#'s ROS 2 client does
-not compile on Debian's Mono (its action consumer calls System.Text.Json, which needs
-System.Memory), so ROS 2 scripts compile against the runtime stub, whose action operations are
+They compile against ROS#'s real client library (ROS# 2.2.1's RosBridgeClient and RosConnector,
+built for ROS 1 or, with ``ROS2`` defined, for ROS 2, as the runtime tests build them) and the
+Unity stand-in, and against the compile stubs other tests use, whose action operations are
 checked here to be declared exactly as RosSocket.cs declares them.
 
 Regenerate the golden files with ``UNITYSCAFFOLD_UPDATE=1`` and review the diff.
@@ -21,7 +20,7 @@ from csharp import MCS_FLAGS, UNITY_STUBS, compile_applied_project
 from helpers import assert_same_tree, require, run_cli, updating
 
 from tests.runtime.bridge import vendor_folder
-from tests.runtime.client import CSHARP, build_client, mcs_compile
+from tests.runtime.client import CSHARP, build_client, build_ros2_client, mcs_compile
 
 REPO = Path(__file__).resolve().parents[2]
 GOLDEN = Path(__file__).parent / "golden" / "actions"
@@ -69,13 +68,21 @@ def test_action_scripts_are_the_golden_ones(tmp_path: Path, ros: int) -> None:
     assert_same_tree(scripts, expected)
 
 
-def test_ros1_action_scripts_compile_against_rossharps_client(mcs: str, tmp_path: Path) -> None:
+def _rossharp() -> Path:
     package = vendor_folder("UNITYSCAFFOLD_ROSSHARP", "ros-sharp/2.2.1/com.siemens.ros-sharp")
     require(package, "ROS# 2.2.1's com.siemens.ros-sharp folder (UNITYSCAFFOLD_ROSSHARP)")
     assert package is not None
-    project = _applied(tmp_path, 1)
+    return package
+
+
+@pytest.mark.parametrize("ros", [1, 2])
+def test_action_scripts_compile_against_rossharps_client(
+    mcs: str, tmp_path: Path, ros: int
+) -> None:
+    package = _rossharp()
+    project = _applied(tmp_path, ros)
     build = tmp_path / "build"
-    client = build_client(mcs, package, build)
+    client = (build_ros2_client if ros == 2 else build_client)(mcs, package, build)
     engine = build / "UnityEngine.dll"
     mcs_compile(mcs, [CSHARP / "UnityEngineRuntime.cs"], engine)
     connector = package / "Runtime" / "RosBridgeClient" / "RosCommunication" / "RosConnector.cs"
@@ -83,14 +90,16 @@ def test_ros1_action_scripts_compile_against_rossharps_client(mcs: str, tmp_path
     references = [engine, client, build / "Newtonsoft.Json.dll", build / "websocket-sharp.dll"]
     # Our flags (warnings as errors), not the third-party ones: the generated code is ours.
     args = [mcs, *MCS_FLAGS, f"-out:{build / 'Assembly-CSharp.dll'}"]
+    args += ["-define:ROS2"] if ros == 2 else []
     args += [f"-r:{r}" for r in references] + [str(connector), *map(str, generated)]
     done = subprocess.run(args, capture_output=True, text=True, timeout=600, check=False)
     assert done.returncode == 0 and "warning" not in done.stdout, done.stdout + done.stderr
 
 
-def test_ros2_action_scripts_compile_against_the_runtime_stub(mcs: str, tmp_path: Path) -> None:
-    project = _applied(tmp_path, 2)
-    compile_applied_project(mcs, project / "robot.yaml", tmp_path / "build", ros2=True)
+@pytest.mark.parametrize("ros", [1, 2])
+def test_action_scripts_compile_against_the_stubs(mcs: str, tmp_path: Path, ros: int) -> None:
+    project = _applied(tmp_path, ros)
+    compile_applied_project(mcs, project / "robot.yaml", tmp_path / "build", ros2=ros == 2)
 
 
 def _declarations(text: str, names: tuple[str, ...]) -> dict[str, str]:
@@ -114,10 +123,7 @@ ROS2_OPERATIONS = (
 
 
 def test_the_stubs_action_operations_are_declared_as_rossharps() -> None:
-    package = vendor_folder("UNITYSCAFFOLD_ROSSHARP", "ros-sharp/2.2.1/com.siemens.ros-sharp")
-    require(package, "ROS# 2.2.1's com.siemens.ros-sharp folder (UNITYSCAFFOLD_ROSSHARP)")
-    assert package is not None
-    real = (package / "Runtime/Libraries/RosBridgeClient/RosSocket.cs").read_text("utf-8-sig")
+    real = (_rossharp() / "Runtime/Libraries/RosBridgeClient/RosSocket.cs").read_text("utf-8-sig")
     stub = UNITY_STUBS[1].read_text(encoding="utf-8")
 
     assert _declarations(stub, ROS2_OPERATIONS) == _declarations(real, ROS2_OPERATIONS)

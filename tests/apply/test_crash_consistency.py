@@ -147,7 +147,7 @@ def test_check_notices_a_temporary_file_left_by_a_dead_writer_and_apply_removes_
 def test_pruning_removes_the_folders_it_empties_with_their_metas(sample: Path) -> None:
     manifest = sample / "robot.yaml"
     text = manifest.read_text()
-    for entry in ("/base_status", "/dock/feedback", "/set_speed_limit"):
+    for entry in ("/base_status", "/dock/feedback", "/set_speed_limit", "/dock"):
         text = re.sub(rf"  - \{{name: {entry},.*\n(     .*\n)?", "", text)
     manifest.write_text(text)
     run = run_cli("apply", str(manifest))
