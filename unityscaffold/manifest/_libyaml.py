@@ -66,6 +66,16 @@ class _Composer:
         self.parser = parser
         self.resolver = resolver
         self.anchors: dict[str, Node] = {}
+        # A plain scalar's tag depends only on its text (a manifest repeats its keys and
+        # types), a collection's only on its kind: each is resolved by ruamel once.
+        self.tags: dict[tuple[Any, Any, Any], Any] = {}
+
+    def tag(self, kind: Any, value: Any, implicit: Any) -> Any:
+        key = (kind, value, implicit)
+        found = self.tags.get(key)
+        if found is None:
+            found = self.tags[key] = self.resolver.resolve(kind, value, implicit)
+        return found
 
     def stream(self) -> Node | None:
         events = self.parser
@@ -112,7 +122,7 @@ class _Composer:
             if event.style in ("|", ">"):
                 raise _Unsupported  # libyaml lets a comment touch the indicator, ruamel not
             node: Node = ScalarNode(
-                self.resolver.resolve(ScalarNode, event.value, event.implicit),
+                self.tag(ScalarNode, event.value, event.implicit),
                 event.value,
                 event.start_mark,
                 event.end_mark,
@@ -121,7 +131,7 @@ class _Composer:
         else:
             kind = SequenceNode if isinstance(event, yaml.SequenceStartEvent) else MappingNode
             node = kind(
-                self.resolver.resolve(kind, None, event.implicit),
+                self.tag(kind, None, event.implicit),
                 [],
                 event.start_mark,
                 None,

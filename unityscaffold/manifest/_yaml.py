@@ -28,6 +28,7 @@ from unityscaffold.manifest._libyaml import RUAMEL, compose_plain
 __all__ = ["YEntry", "YMap", "YNode", "YScalar", "YSeq", "compose"]
 
 _CORE = "tag:yaml.org,2002:"
+_STR = f"{_CORE}str"
 _SCALAR_TAGS = {f"{_CORE}{t}" for t in ("str", "int", "float", "bool", "null", "timestamp")}
 # What an explicitly tagged scalar must look like, for the tags whose values can be wrong.
 _TAGGED_FORMS = {
@@ -232,6 +233,9 @@ class _Converter:
                 f"unsupported YAML tag {tag!r}",
                 hint="the manifest uses plain YAML values; remove the tag",
             )
+        if tag == _STR:
+            # what ruamel's str constructor returns: the text itself
+            return YScalar(node.value, self.loc(node))
         if tag == f"{_CORE}timestamp":
             # Dates mean nothing to a manifest; keep what was written rather than a datetime.
             return YScalar(str(node.value), self.loc(node))
