@@ -48,6 +48,16 @@ class SourceLocation:
     col: int = 0
     source_line: str | None = None
 
+    @classmethod
+    def at_byte(cls, path: str, raw: bytes, offset: int) -> SourceLocation:
+        """Line and column (in characters) of the byte at ``offset`` of a file's ``raw``
+        content, such as one that is not UTF-8; the line is shown with such bytes replaced."""
+        start = raw.rfind(b"\n", 0, offset) + 1
+        end = raw.find(b"\n", offset)
+        before = raw[start:offset].decode("utf-8", "replace")
+        source = raw[start : end if end >= 0 else len(raw)].decode("utf-8", "replace")
+        return cls(path, raw.count(b"\n", 0, offset) + 1, len(before) + 1, source.rstrip("\r"))
+
     def __str__(self) -> str:
         if self.line <= 0:
             return self.path

@@ -114,6 +114,36 @@ def test_showing_a_malformed_type_exits_2_with_its_position(tmp_path):
     assert "    int32 1x\n          ^" in run.err
 
 
+@pytest.mark.parametrize("ros", ["1", "2"])
+def test_showing_a_type_that_contains_itself_is_refused_at_the_field_that_closes_the_cycle(
+    ros, tmp_path
+):
+    """Its ROS 1 md5 would need its own md5: this recursed until Python gave up (exit 3)."""
+    build_tree(tmp_path, {"ws/loop_msgs/msg/A.msg": "B b\n", "ws/loop_msgs/msg/B.msg": "A a\n"})
+    run = run_cli(
+        "msgs", "show", "loop_msgs/A", "--ros", ros, "--no-env", "--path", str(tmp_path / "ws")
+    )
+    assert run.code == 2 and "Traceback" not in run.err
+    b = tmp_path / "ws/loop_msgs/msg/B.msg"
+    mid = "/msg/" if ros == "2" else "/"
+    assert run.err.startswith(
+        f"{b}:1:1: error: types refer to each other in a cycle: loop_msgs{mid}A -> "
+        f"loop_msgs{mid}B -> loop_msgs{mid}A\n"
+    )
+
+
+@pytest.mark.parametrize("ros", ["1", "2"])
+def test_showing_a_type_with_an_unknown_field_type_names_that_field(ros, tmp_path):
+    build_tree(tmp_path, {"ws/uses_msgs/msg/U.msg": "int32 a\nnowhere_msgs/Missing m\n"})
+    run = run_cli(
+        "msgs", "show", "uses_msgs/U", "--ros", ros, "--no-env", "--path", str(tmp_path / "ws")
+    )
+    assert run.code == 2
+    assert run.err.startswith(
+        f"{tmp_path / 'ws/uses_msgs/msg/U.msg'}:2:1: error: unknown ROS {ros}"
+    )
+
+
 def test_unknown_type_suggests_close_names():
     run = run_cli("msgs", "show", "geometry_msgs/Twst", "--ros", "2", "--no-env")
     assert run.code == 2

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from unityscaffold.errors import LocatedError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
@@ -116,3 +117,21 @@ def test_action_messages_equal_the_files_debian_generated(ros1_share):
     for message in action.messages:
         shipped = (ros1_share / "nav_msgs" / "msg" / f"{message.name}.msg").read_text()
         assert message.text == shipped, message.name
+
+
+def test_a_message_that_contains_itself_has_no_md5_and_says_where(tmp_path):
+    """Definitions from a live system reach the md5 without a closure check first."""
+    folder = tmp_path / "loop_msgs" / "msg"
+    folder.mkdir(parents=True)
+    (folder / "A.msg").write_text("int32 x\nA again\n")
+    registry = Registry.load(Dialect.ROS1, [tmp_path], use_environment=False, use_builtin=False)
+    identity = Ros1Identity(registry)
+    with pytest.raises(LocatedError) as caught:
+        identity.md5sum(registry.message("loop_msgs/A"))
+    assert caught.value.render().startswith(
+        f"{folder / 'A.msg'}:2:1: error: types refer to each other in a cycle: "
+        "loop_msgs/A -> loop_msgs/A\n"
+    )
+    assert [d.full_name for d in identity.dependencies(registry.message("loop_msgs/A"))] == [
+        "loop_msgs/A"
+    ]

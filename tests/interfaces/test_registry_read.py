@@ -16,15 +16,19 @@ from unityscaffold.interfaces.sources import SearchRoot
 
 
 def _same_as_text_mode(path: Path) -> None:
+    """The same text, or for text that is not UTF-8 an error that names its first bad byte in
+    the whole file (text mode counts from the chunk it was decoding)."""
+    data = path.read_bytes()
     try:
-        expected: str | None = path.read_text(encoding="utf-8")
-        error = ""
-    except UnicodeDecodeError as exc:
-        expected, error = None, str(exc)
-    if expected is None:
+        expected = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
         with pytest.raises(UnicodeDecodeError) as raised:
             _read_text(path)
-        assert str(raised.value) == error
+        assert raised.value.object == data
+        start = raised.value.start
+        data[:start].decode("utf-8")  # all before it decodes (this raises otherwise)
+        with pytest.raises(UnicodeDecodeError):
+            data[start : start + 4].decode("utf-8")
     else:
         assert _read_text(path) == expected
 
@@ -39,7 +43,7 @@ def test_any_bytes_read_as_text_mode_reads_them(tmp_path_factory, parts):
     _same_as_text_mode(path)
 
 
-def test_a_bad_byte_past_the_first_chunk_gives_the_same_error(tmp_path):
+def test_a_bad_byte_past_the_first_chunk_is_found_where_it_is(tmp_path):
     path = tmp_path / "T.msg"
     path.write_bytes(b"int32 a\r\n" * 2000 + b"\xff")
     _same_as_text_mode(path)
@@ -65,7 +69,13 @@ def test_a_file_that_is_not_utf8_is_a_located_error(tmp_path):
     folder = tmp_path / "pkg" / "msg"
     folder.mkdir(parents=True)
     (folder.parent / "package.xml").write_text("<package><name>pkg</name></package>")
-    (folder / "T.msg").write_bytes(b"int32 a\n\xff\n")
+    (folder / "T.msg").write_bytes(b"int32 a\r\n# caf\xe9\r\n")
     registry = Registry(Dialect.ROS1, [SearchRoot(tmp_path, "t", recursive=False)])
-    with pytest.raises(LocatedError, match="cannot read: 'utf-8' codec can't decode byte 0xff"):
+    with pytest.raises(LocatedError) as caught:
         registry.parse(registry.files()[0])
+    assert caught.value.render() == (
+        f"{folder / 'T.msg'}:2:6: error: the file is not UTF-8 text (byte 0xe9)\n"
+        "    # caf\ufffd\n"
+        "         ^\n"
+        "  hint: save it as UTF-8"
+    )

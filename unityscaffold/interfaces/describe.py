@@ -91,6 +91,8 @@ class Describer:
 
     def describe(self, interface: Interface) -> dict[str, Any]:
         """The JSON shape of ``msgs show``."""
+        # Unknown field types and cycles first, all at once and each at the field using it.
+        self.registry.closure([interface])
         if isinstance(interface, MessageSpec):
             return self.message(interface)
         base = {

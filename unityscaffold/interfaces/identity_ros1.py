@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import hashlib
 
+from unityscaffold.errors import LocatedError, SourceLocation
 from unityscaffold.interfaces.model import MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 
@@ -28,15 +29,22 @@ class Ros1Identity:
     def __init__(self, registry: Registry) -> None:
         self.registry = registry
         self._md5: dict[str, str] = {}
+        self._open: list[str] = []  # messages whose md5 is being computed, outermost first
 
     def md5_text(self, spec: MessageSpec) -> str:
         lines = [f"{c.type} {c.name}={c.text}" for c in spec.constants]
-        for field in spec.fields:
-            if field.type.is_builtin:
-                lines.append(f"{field.type_text or field.type} {field.name}")
-            else:
-                nested = self.registry.field_type(spec, field)
-                lines.append(f"{self.md5sum(nested)} {field.name}")
+        self._open.append(spec.full_name)
+        try:
+            for field in spec.fields:
+                if field.type.is_builtin:
+                    lines.append(f"{field.type_text or field.type} {field.name}")
+                else:
+                    nested = self.registry.field_type(spec, field)
+                    if nested.full_name in self._open:
+                        raise _cycle(self._open, nested, field.location or spec.source)
+                    lines.append(f"{self.md5sum(nested)} {field.name}")
+        finally:
+            self._open.pop()
         return "\n".join(lines).strip()
 
     def md5sum(self, spec: MessageSpec | ServiceSpec) -> str:
@@ -58,9 +66,11 @@ class Ros1Identity:
                 if field.type.is_message:
                     nested = self.registry.field_type(current, field)
                     # genmsg lists a dependency before its own dependencies, and keeps the
-                    # first occurrence of each.
-                    ordered.setdefault(nested.full_name, nested)
-                    walk(nested)
+                    # first occurrence of each. One seen before was walked then: its own
+                    # dependencies are all listed already (and a cycle ends here).
+                    if nested.full_name not in ordered:
+                        ordered[nested.full_name] = nested
+                        walk(nested)
 
         walk(spec)
         return list(ordered.values())
@@ -70,3 +80,19 @@ class Ros1Identity:
         for dependency in self.dependencies(spec):
             parts += [_SEPARATOR, f"MSG: {dependency.full_name}\n", dependency.text, "\n"]
         return "".join(parts)[:-1]
+
+
+def _cycle(
+    open_names: list[str], nested: MessageSpec, where: SourceLocation | str | None
+) -> LocatedError:
+    """The error for a message that contains itself (through ``open_names``), at the field that
+    closes the cycle: its md5 would need its own md5."""
+    cycle = " -> ".join([*open_names[open_names.index(nested.full_name) :], nested.full_name])
+    location = (
+        where if isinstance(where, SourceLocation) else SourceLocation(where or nested.full_name)
+    )
+    return LocatedError.at(
+        location,
+        f"types refer to each other in a cycle: {cycle}",
+        hint="ROS messages cannot contain themselves",
+    )

@@ -47,15 +47,12 @@ def _read_text(path: Path) -> str:
     """The file's text exactly as ``read_text(encoding="utf-8")`` gives it, newlines translated.
 
     Reading bytes and decoding them in one call skips the text-mode reader, which cost more
-    than reading a small interface file. Text that is not UTF-8 is read again the usual way, so
-    the error says what it said before.
+    than reading a small interface file. Text that is not UTF-8 raises ``UnicodeDecodeError``,
+    whose ``object`` is the file's content.
     """
     with open(path, "rb", buffering=0) as handle:  # no buffered reader for one read
         data = handle.readall()
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        return path.read_text(encoding="utf-8")
+    text = data.decode("utf-8")
     return text.replace("\r\n", "\n").replace("\r", "\n") if "\r" in text else text
 
 
@@ -153,8 +150,18 @@ class Registry:
             raise self._broken[file.path]
         try:
             text = _read_text(file.path)
-        except (OSError, UnicodeDecodeError) as exc:
-            error = LocatedError.at(SourceLocation(str(file.path)), f"cannot read: {exc}")
+        except OSError as exc:
+            error = LocatedError.at(
+                SourceLocation(str(file.path)), f"cannot read: {exc.strerror or exc}"
+            )
+            self._broken[file.path] = error
+            raise error from None
+        except UnicodeDecodeError as exc:
+            error = LocatedError.at(
+                SourceLocation.at_byte(str(file.path), exc.object, exc.start),
+                f"the file is not UTF-8 text (byte 0x{exc.object[exc.start]:02x})",
+                hint="save it as UTF-8",
+            )
             self._broken[file.path] = error
             raise error from None
         try:
@@ -361,12 +368,18 @@ class Registry:
         found: dict[str, MessageSpec],
         path: list[str],
         problems: list[Diagnostic],
+        used_at: SourceLocation | str | None = None,  # the field using it, or its file
     ) -> None:
         if message.full_name in found:
             return
         if message.full_name in path:
             cycle = " -> ".join([*path[path.index(message.full_name) :], message.full_name])
-            where = SourceLocation(message.source or message.full_name)
+            # at the field that closes the cycle
+            where = (
+                used_at
+                if isinstance(used_at, SourceLocation)
+                else SourceLocation(used_at or message.source or message.full_name)
+            )
             problems.append(
                 Diagnostic(
                     where,
@@ -389,7 +402,8 @@ class Registry:
                 where = field.location or SourceLocation(message.source or message.full_name)
                 problems.extend(LocatedError.at(where, error.message, hint=error.hint).diagnostics)
                 continue
-            self._visit(dependency, found, path, problems)
+            # where the field is, for a cycle it closes (only then is it worked out)
+            self._visit(dependency, found, path, problems, field.location or message.source)
         path.pop()
         found[message.full_name] = message
 

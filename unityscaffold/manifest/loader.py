@@ -60,21 +60,11 @@ def load_manifest(path: Path) -> Manifest:
         text = raw.decode("utf-8-sig")  # an editor's BOM is harmless
     except UnicodeDecodeError as exc:
         raise LocatedError.at(
-            _byte_location(str(path), raw, exc.start),
+            SourceLocation.at_byte(str(path), raw, exc.start),
             f"the manifest is not UTF-8 text (byte 0x{raw[exc.start]:02x})",
             hint="save it as UTF-8",
         ) from None
     return parse_manifest(text, Path(path))
-
-
-def _byte_location(path: str, raw: bytes, offset: int) -> SourceLocation:
-    """Line and column (in characters) of the byte at ``offset``; the line is shown with
-    undecodable bytes replaced."""
-    start = raw.rfind(b"\n", 0, offset) + 1
-    end = raw.find(b"\n", offset)
-    before = raw[start:offset].decode("utf-8", "replace")
-    source = raw[start : end if end >= 0 else len(raw)].decode("utf-8", "replace")
-    return SourceLocation(path, raw.count(b"\n", 0, offset) + 1, len(before) + 1, source)
 
 
 def parse_manifest(text: str, path: Path) -> Manifest:
