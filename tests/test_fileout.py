@@ -216,6 +216,17 @@ def test_a_name_longer_than_file_systems_take_is_refused_before_anything_is_touc
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("name", ["a" * 255, "é" * 127 + "a", "a" * 240 + ".meta"])
+def test_a_name_as_long_as_file_systems_take_is_written_through_a_shorter_temporary_name(
+    tmp_path: Path, name: str
+) -> None:
+    """Its temporary file (``.<name>.<pid>-<n>.tmp``) would be too long to create."""
+    target = tmp_path / "Assets" / name
+    write_files(plan_files([DesiredFile(target, b"x")]))
+    assert target.read_bytes() == b"x"
+    assert [p.name for p in target.parent.iterdir()] == [name]
+
+
 def test_relative_paths_are_planned_and_written_from_the_working_folder(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextlib
 import enum
+import hashlib
 import itertools
 import os
 import re
@@ -241,7 +242,14 @@ _TEMP_RE = re.compile(r"^\..+\.(\d+)-\d+\.tmp$")
 
 def _temp_name(target: str, attempt: int) -> str:
     folder, name = os.path.split(target)
-    return os.path.join(folder, f".{name}.{os.getpid()}-{attempt}.tmp")
+    suffix = f".{os.getpid()}-{attempt}.tmp"
+    room = MAX_NAME_BYTES - 1 - len(suffix)
+    if len(name) * 4 > room and len(encoded := name.encode("utf-8")) > room:
+        # A target name near the limit would make a temporary name the disk refuses: its start
+        # and a digest of all of it instead (still one temporary name per target).
+        digest = hashlib.sha256(encoded).hexdigest()[:16]
+        name = encoded[: room - len(digest) - 1].decode("utf-8", "ignore") + "~" + digest
+    return os.path.join(folder, f".{name}{suffix}")
 
 
 def _alive(pid: int) -> bool:
