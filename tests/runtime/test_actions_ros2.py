@@ -8,44 +8,16 @@ goal that succeeds and one that is cancelled (csharp/Ros2ActionProbe.cs)."""
 
 from __future__ import annotations
 
-import threading
 from pathlib import Path
-from typing import Any
 
 from tests.runtime.client import CSHARP, mcs_compile
+from tests.runtime.dock_action import DOCK, TIMEOUT, dock
 from tests.runtime.lines import start
-from tests.runtime.rosbridge2_double import (
-    STATUS_CANCELED,
-    STATUS_SUCCEEDED,
-    ActionType,
-    Refused,
-    running,
-)
+from tests.runtime.rosbridge2_double import STATUS_CANCELED, STATUS_SUCCEEDED, running
 from tests.runtime.runtime_helpers import SAMPLE_INTERFACES, write_code
 from unityscaffold.codegen import Options, generate
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
-
-TIMEOUT = 60  # seconds; a guard against a hang only
-DOCK = ActionType(
-    "diffbot_msgs/action/Dock",
-    goal={"dock_id": "string"},
-    result={"docked": "bool", "battery": "float32"},
-    feedback={"distance_remaining": "float32"},
-)
-
-
-def dock(args: dict[str, Any], feedback: Any, cancelled: threading.Event) -> Any:
-    """The double's Dock server: as action_node.py's, in ROS 2 terms."""
-    if args.get("dock_id") == "reject-me":
-        raise Refused("Goal was rejected")
-    if args.get("dock_id") == "cancel-me":
-        feedback({"distance_remaining": 9.5})
-        cancelled.wait(TIMEOUT)
-        return STATUS_CANCELED, {"docked": False, "battery": -1.0}
-    feedback({"distance_remaining": 2.5})
-    feedback({"distance_remaining": 1.25})
-    return STATUS_SUCCEEDED, {"docked": True, "battery": 87.5}
 
 
 def _build(mcs: str, client: Path, out: Path) -> Path:
