@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import cache
 from pathlib import PurePath
 
 from unityscaffold.codegen._actions import ActionClasses, RuntimeTypes
@@ -145,6 +146,16 @@ def _owner(registry: Registry, part: MessageSpec) -> Interface | None:
     return registry.get(part.owner)
 
 
+@cache
+def _shipped_names(dialect: Dialect) -> dict[str, frozenset[str]]:
+    """The classes ROS# ships, as names by full namespace: hundreds of them, known to every
+    ``generate`` call."""
+    names: dict[str, set[str]] = {}
+    for segment, name in shipped_classes(dialect):
+        names.setdefault(rossharp_class(segment, name).namespace, set()).add(name)
+    return {namespace: frozenset(found) for namespace, found in names.items()}
+
+
 class ClassSet:
     """Every class of one ``generate`` call, named, placed, and marked generated or skipped."""
 
@@ -158,7 +169,8 @@ class ClassSet:
         self.known = KnownClasses()
         self.known.add(i.cs_class for i in items)
         if not custom_namespace:
-            self.known.add(rossharp_class(ns, cls) for ns, cls in shipped_classes(dialect))
+            for namespace, names in _shipped_names(dialect).items():
+                self.known.add_names(namespace, names)
         if dialect is Dialect.ROS1:
             self.known.add(rossharp_class(ns, cls) for ns, cls in ROS1_HANDWRITTEN)
         self.by_ros: dict[str, CsClass] = {}
@@ -342,17 +354,10 @@ def collect_classes(
         items += _classes_of(unit, namespace or ROSSHARP_ROOT_NAMESPACE)
     _check_unique(items)
     if namespace is None:
+        reasons = [_skip_reason(i, dialect, include_shipped) for i in items]
+        # a new entry only for a class that is skipped: most are generated
         items = [
-            ClassEntry(
-                i.interface,
-                i.role,
-                i.spec,
-                i.cs_class,
-                i.ros_message_name,
-                i.path,
-                i.identity_of,
-                _skip_reason(i, dialect, include_shipped),
-            )
-            for i in items
+            i if reason is None else replace(i, skip_reason=reason)
+            for i, reason in zip(items, reasons, strict=True)
         ]
     return ClassSet(dialect, namespace or ROSSHARP_ROOT_NAMESPACE, namespace is not None, items)

@@ -26,6 +26,7 @@ _INT_RANGES = {
     "long": (-(2**63), 2**63 - 1),
     "ulong": (0, 2**64 - 1),
 }
+_INT_SUFFIXES = {"long": "L", "ulong": "UL", "uint": "U"}
 _ESCAPES = {
     "\\": "\\\\",
     '"': '\\"',
@@ -85,8 +86,7 @@ def _int_literal(value: int, cs_type: str) -> str:
     low, high = _INT_RANGES[cs_type]
     if not low <= value <= high:
         raise ValueError(f"{value} does not fit in a C# {cs_type} ({low}..{high})")
-    suffix = {"long": "L", "ulong": "UL", "uint": "U"}.get(cs_type, "")
-    return f"{value}{suffix}"
+    return f"{value}{_INT_SUFFIXES.get(cs_type, '')}"
 
 
 def literal(value: Scalar, cs_type: str) -> str:

@@ -27,6 +27,10 @@ class KnownClasses:
         for cls in classes:
             self.by_namespace[cls.namespace].add(cls.name)
 
+    def add_names(self, namespace: str, names: Iterable[str]) -> None:
+        """Classes of ``namespace`` by their names (no CsClass made for each)."""
+        self.by_namespace[namespace].update(names)
+
     def defines(self, namespace: str, name: str) -> bool:
         return name in self.by_namespace.get(namespace, ())
 
