@@ -278,3 +278,20 @@ def test_a_whole_process_replay_loads_neither_typer_nor_the_pipeline(
     again = scaffold_process()
     assert again.stdout == first.stdout
     assert "typer" not in again.stderr and "unityscaffold.apply" not in again.stderr
+
+
+def test_a_run_that_starts_a_process_leaves_no_record(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from unityscaffold.cli import apply as apply_cli
+
+    real = apply_cli.stale_schema
+
+    def asking_another_process(manifest: Path) -> Path | None:
+        subprocess.run([sys.executable, "-c", "pass"], check=True)
+        return real(manifest)
+
+    monkeypatch.setattr(apply_cli, "stale_schema", asking_another_process)
+    settle()
+    assert scaffold(capsysbinary, "apply")[0] == 0
+    assert records(sample) == []

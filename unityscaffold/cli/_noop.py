@@ -82,6 +82,8 @@ _WRITE_EVENTS = frozenset(
 #: Events after which the answer may depend on more than files: not recorded.
 _ELSEWHERE = ("socket.", "subprocess.", "os.exec", "os.posix_spawn", "os.spawn", "os.system")
 
+_WATCHED = frozenset({"open", "os.scandir", "os.listdir", *_WRITE_EVENTS})
+
 _real_stat = os.stat
 _real_lstat = os.lstat
 _real_realpath = os.path.realpath
@@ -225,9 +227,14 @@ def _wrap(stream: Any, fd: int, log: list[tuple[int, bytes]]) -> io.TextIOWrappe
 
 
 def _hook(event: str, args: tuple[Any, ...]) -> None:
-    recorder = _active
-    if recorder is not None:
-        recorder.event(event, args)
+    # Called for every audit event of the process (imports, exec, compile ...): the few that
+    # matter are picked out first, in one set lookup.
+    if event in _WATCHED:
+        recorder = _active
+        if recorder is not None:
+            recorder.event(event, args)
+    elif event.startswith(_ELSEWHERE) and _active is not None:
+        _active.tainted = True  # another process or the network may answer differently
 
 
 def _pure_python_probes() -> bool:
@@ -349,8 +356,6 @@ class Recorder:
             path = os.fsdecode(os.fspath(target))
             self._seen(path, _STAT)
             self.folders.add(path)
-        elif event.startswith(_ELSEWHERE):
-            self.tainted = True  # another process or the network may answer differently
         elif event in _WRITE_EVENTS:
             first = args[0] if args else None
             named = os.fsdecode(first) if isinstance(first, (str, bytes, os.PathLike)) else None
