@@ -49,27 +49,34 @@ class SerializationEra:
 
 def detect_era(docs: Sequence[Doc]) -> SerializationEra:
     """Read the era markers of a file from its documents."""
-    modern = legacy = root_order = plain_transform = scene_roots = False
+    modern = legacy = False
+    for doc in docs:  # the first document with either prefab field tells
+        modern = "\n  m_CorrespondingSourceObject:" in doc.text
+        legacy = "\n  m_PrefabParentObject:" in doc.text
+        if modern or legacy:
+            break
+    root_order = plain_transform = scene_roots = False
     gameobjects: list[str] = []
     behaviours: list[str] = []
-    for doc in docs:
-        text = doc.text
-        if doc.class_id == SCENE_ROOTS_CLASS:
-            scene_roots = True
-        if not modern and not legacy:
-            modern = "\n  m_CorrespondingSourceObject:" in text
-            legacy = "\n  m_PrefabParentObject:" in text
-        if doc.class_id == 4 and not doc.stripped:
-            if "\n  m_RootOrder:" in text:
+    for doc in docs:  # one class test per document in the usual case: this runs per document
+        class_id = doc.class_id
+        if class_id == 114:
+            behaviours.append(doc.text)
+        elif class_id == 1:
+            gameobjects.append(doc.text)
+        elif class_id == 4:
+            if root_order or doc.stripped:
+                continue  # one Transform with m_RootOrder settles it
+            if "\n  m_RootOrder:" in doc.text:
                 root_order = True
             else:
                 plain_transform = True
-        if doc.class_id == 1:
-            gameobjects.append(text)
-        elif doc.class_id == 114:
-            behaviours.append(text)
-    classid = _any_line(_CLASSID_ITEM_RE, gameobjects)
-    qualified = _any_line(_QUALIFIED_ID_RE, behaviours)
+        elif class_id == SCENE_ROOTS_CLASS:
+            scene_roots = True
+    # one search per document, iterated in C and stopping at the first hit: cheaper than
+    # joining the documents into bigger pieces to search
+    classid = any(map(_CLASSID_ITEM_RE.search, gameobjects))
+    qualified = any(map(_QUALIFIED_ID_RE.search, behaviours))
     if not root_order and not plain_transform:
         root_order = not scene_roots  # an empty pre-2022 scene has neither marker
     return SerializationEra(
@@ -79,19 +86,3 @@ def detect_era(docs: Sequence[Doc]) -> SerializationEra:
         scene_roots=scene_roots,
         qualified_class_identifier=qualified,
     )
-
-
-def _any_line(pattern: re.Pattern[str], texts: list[str]) -> bool:
-    """Whether a one-line ``pattern`` matches in any of ``texts``, searched about a megabyte at
-    a time (one regex call per batch, not per document). Every document ends with a line break,
-    so joining them never makes a line that was not there."""
-    batch: list[str] = []
-    size = 0
-    for text in texts:
-        batch.append(text)
-        size += len(text)
-        if size >= 1 << 20:
-            if pattern.search("".join(batch)):
-                return True
-            batch, size = [], 0
-    return bool(batch) and pattern.search("".join(batch)) is not None
