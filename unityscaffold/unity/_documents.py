@@ -9,7 +9,7 @@ methods below: neither module touches the other's internals. Every change goes t
 from __future__ import annotations
 
 import bisect
-from collections.abc import Iterator, Sequence, Set
+from collections.abc import Iterator, Mapping, Sequence, Set
 
 from unityscaffold.errors import SourceLocation, UserError
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, SETTINGS_CLASSES
@@ -73,6 +73,11 @@ class Documents:
 
     def __contains__(self, file_id: object) -> bool:
         return file_id in self._by_id
+
+    @property
+    def by_id(self) -> Mapping[int, Doc]:
+        """fileID → document; when a fileID is used twice it names only one of them."""
+        return self._by_id
 
     def get(self, file_id: int) -> Doc | None:
         return self._by_id.get(file_id)

@@ -12,7 +12,7 @@ import itertools
 import operator
 import re
 from collections import Counter
-from collections.abc import Collection, Sequence
+from collections.abc import Collection, Mapping, Sequence
 
 import yaml
 
@@ -78,6 +78,7 @@ def check_docs(
     changed: Collection[int] = (),
     checked: Links | None = None,
     recent: Collection[int] = (),
+    index: Mapping[int, Doc] | None = None,
 ) -> tuple[list[Diagnostic], Links | None]:
     """``validate_docs``, plus the link table of a file found clean (None otherwise).
 
@@ -86,12 +87,16 @@ def check_docs(
     read again: unchanged ones were found sound and still are, unless an object they refer to
     was removed (then everything is checked). The checks between objects (owners, parents,
     cycles, roots) still cover the whole table. Anything found sends it to the full check, so
-    the diagnostics are the same either way.
+    the diagnostics are the same either way. ``index``, the caller's fileID → document map,
+    is used when it has an entry per document (the fileIDs are then unique and it names each).
     """
-    by_id: dict[int, Doc] = {}
-    for doc in docs:
-        by_id.setdefault(doc.file_id, doc)
-    unique = len(by_id) == len(docs)
+    if index is not None and len(index) == len(docs):
+        by_id, unique = index, True
+    else:
+        own: dict[int, Doc] = {}
+        for doc in docs:
+            own.setdefault(doc.file_id, doc)
+        by_id, unique = own, len(own) == len(docs)
     if checked is not None and unique and all(i in by_id for i in recent):
         loc = _Locator(path, prolog, docs)
         checked.refresh(recent, by_id)
@@ -110,7 +115,7 @@ def _check_all(
     prolog: str,
     docs: Sequence[Doc],
     changed: Collection[int],
-    by_id: dict[int, Doc],
+    by_id: Mapping[int, Doc],
     unique: bool,
 ) -> tuple[list[Diagnostic], Links | None]:
     loc = _Locator(path, prolog, docs)
@@ -142,7 +147,7 @@ def _check_all(
 
 
 def _links_problems(
-    loc: _Locator, links: Links, by_id: dict[int, Doc], docs: Sequence[Doc]
+    loc: _Locator, links: Links, by_id: Mapping[int, Doc], docs: Sequence[Doc]
 ) -> list[Diagnostic]:
     return [
         *_gameobjects(loc, links, by_id),
@@ -158,7 +163,7 @@ _NONZERO_REF_RE = re.compile(r"\{fileID: (-?0*[1-9]\d*)\}")
 _TEXT = operator.attrgetter("text")
 
 
-def _any_dangling(docs: Sequence[Doc], by_id: dict[int, Doc]) -> bool:
+def _any_dangling(docs: Sequence[Doc], by_id: Mapping[int, Doc]) -> bool:
     # One regex call per document, iterated in C (map, chain, set): joining documents into
     # bigger pieces first was slower, the copy costing more than the calls it saved.
     # References are kept as written until the set is made: int() once per distinct fileID.
@@ -170,7 +175,7 @@ def _key_at(doc: Doc, offset: int) -> str | None:
     return next((k for k, (s, e) in F.spans(doc).items() if s <= offset < e), None)
 
 
-def _dangling(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _dangling(loc: _Locator, doc: Doc, by_id: Mapping[int, Doc]) -> list[Diagnostic]:
     out = []
     for match in F.local_refs(doc.text):
         target = int(match.group(1))
@@ -185,7 +190,7 @@ def _dangling(loc: _Locator, doc: Doc, by_id: dict[int, Doc]) -> list[Diagnostic
     return out
 
 
-def _gameobjects(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _gameobjects(loc: _Locator, links: Links, by_id: Mapping[int, Doc]) -> list[Diagnostic]:
     out = []
     for go_id, components in links.components.items():
         doc = by_id[go_id]
@@ -218,7 +223,7 @@ def _gameobjects(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Dia
     return out
 
 
-def _transforms(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _transforms(loc: _Locator, links: Links, by_id: Mapping[int, Doc]) -> list[Diagnostic]:
     out = []
     for tr_id, father in links.father.items():
         siblings = links.children.get(father)
@@ -253,7 +258,7 @@ _CYCLE_HINT = (
 )
 
 
-def _cycles(loc: _Locator, links: Links, by_id: dict[int, Doc]) -> list[Diagnostic]:
+def _cycles(loc: _Locator, links: Links, by_id: Mapping[int, Doc]) -> list[Diagnostic]:
     """Objects that are their own ancestor: a walk down from the roots would never end.
 
     Each object is visited once (three colours), so this is linear in the file's size.

@@ -69,7 +69,7 @@ class Node:
     prefab_instance_id: int = 0
     parent: int | None = None
     children: list[int] = field(default_factory=list)
-    order: tuple[int, int] = (0, 0)
+    order: tuple[int, int] = (0, 0)  # (m_RootOrder, file position): sorts roots without SceneRoots
 
 
 @dataclass(slots=True)
@@ -119,8 +119,10 @@ def build_hierarchy(docs: Sequence[Doc], by_id: Mapping[int, Doc]) -> Hierarchy:
             nodes[doc.file_id] = _prefab_node(doc, position)
         elif doc.class_id in TRANSFORM_CLASSES and doc.stripped:
             owner[doc.file_id] = F.ref_value(doc, "m_PrefabInstance") or 0
-    _link(nodes, owner, by_id)
-    roots = _order_roots(nodes, owner, docs)
+    scene_roots = next((d for d in reversed(docs) if d.class_id == SCENE_ROOTS_CLASS), None)
+    # with a SceneRoots document, roots are in its order and Transforms' m_RootOrder is unused
+    _link(nodes, owner, by_id, root_order=scene_roots is None)
+    roots = _order_roots(nodes, owner, scene_roots)
     hierarchy = Hierarchy(nodes, roots)
     for depth, node in hierarchy.walk():
         parent_path = hierarchy.paths.get(node.parent) if node.parent is not None else None
@@ -164,8 +166,11 @@ def _unquote(raw: str) -> str:
     return raw
 
 
-def _link(nodes: dict[int, Node], owner: dict[int, int], by_id: Mapping[int, Doc]) -> None:
-    """Set parents and ordered children from Transforms' m_Father/m_Children."""
+def _link(
+    nodes: dict[int, Node], owner: dict[int, int], by_id: Mapping[int, Doc], root_order: bool
+) -> None:
+    """Set parents and ordered children from Transforms' m_Father/m_Children (and roots' order
+    from m_RootOrder if ``root_order``)."""
     # one pass for parents and children (neither depends on the other), once per GameObject
     for node in nodes.values():
         transform = by_id.get(node.transform_id) if node.transform_id is not None else None
@@ -173,9 +178,9 @@ def _link(nodes: dict[int, Node], owner: dict[int, int], by_id: Mapping[int, Doc
             father = node.parent or 0  # PrefabInstance: its m_TransformParent
         else:
             father = F.ref_value(transform, "m_Father") or 0
-            root_order = F.field_value(transform, "m_RootOrder")
-            if root_order is not None and root_order.lstrip("-").isdigit():
-                node.order = (int(root_order), node.order[1])
+            order = F.field_value(transform, "m_RootOrder") if root_order else None
+            if order is not None and order.lstrip("-").isdigit():
+                node.order = (int(order), node.order[1])
             listed = F.list_refs(transform, "m_Children")
             if listed:
                 below = [owner[c] for c in listed if c in owner]
@@ -187,9 +192,10 @@ def _link(nodes: dict[int, Node], owner: dict[int, int], by_id: Mapping[int, Doc
             nodes[node.parent].children.append(node.file_id)
 
 
-def _order_roots(nodes: dict[int, Node], owner: dict[int, int], docs: Sequence[Doc]) -> list[int]:
+def _order_roots(
+    nodes: dict[int, Node], owner: dict[int, int], scene_roots: Doc | None
+) -> list[int]:
     roots = [n for n in nodes.values() if n.parent is None]
-    scene_roots = next((d for d in reversed(docs) if d.class_id == SCENE_ROOTS_CLASS), None)
     if scene_roots is not None:
         listed = F.list_refs(scene_roots, "m_Roots")
         rank = {owner.get(ref, ref): index for index, ref in enumerate(listed)}

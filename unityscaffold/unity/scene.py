@@ -138,7 +138,13 @@ class SceneDocument:
         recent = docs.take_recent()
         with gc_paused():
             problems, self._checked = check_docs(
-                self.path, docs.prolog, docs.in_order, docs.changed, self._checked, recent
+                self.path,
+                docs.prolog,
+                docs.in_order,
+                docs.changed,
+                self._checked,
+                recent,
+                docs.by_id,
             )
         return problems
 
