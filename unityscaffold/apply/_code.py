@@ -249,13 +249,18 @@ def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[Des
     return metas
 
 
-def _script_guid(manifest: Manifest, path: Path, salt: str, moves: Moves | None) -> str:
+def _script_guid(
+    manifest: Manifest, path: Path, salt: str, moves: Moves | None, known: dict[str, str]
+) -> str:
+    """The script's GUID: from its ``.meta`` (as the project index read it, ``known`` by asset
+    path, so the file is not read twice), a moved script's, or derived from its path."""
     meta = path.with_name(path.name + ".meta")
     if moves is not None and not meta.exists():
         moved = moves.guid(path.name)
         if moved is not None:
             return moved
-    return meta_guid(meta, salt, manifest.asset_path(path))
+    asset = manifest.asset_path(path)
+    return known.get(asset) or meta_guid(meta, salt, asset)
 
 
 def _check_class_names(
@@ -315,12 +320,13 @@ def plan_code(
     for file in output_files(messages, messages_dir):
         (created_once if file.create_only else generated).append(file)
     planned: list[PlannedScript] = []
+    known = {info.path: guid for guid, info in scripts.items()}
     for item, spec in items:
         view = _view(manifest, item, spec, messages)
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
-        guid = _script_guid(manifest, path, salt, moves)
-        user_guid = _script_guid(manifest, user_path, salt, moves)
+        guid = _script_guid(manifest, path, salt, moves, known)
+        user_guid = _script_guid(manifest, user_path, salt, moves, known)
         generated.append(DesiredFile(path, rendered.plumbing.encode()))
         created_once += [
             DesiredFile(user_path, rendered.user.encode(), create_only=True),
