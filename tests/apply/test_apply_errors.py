@@ -51,6 +51,47 @@ def test_a_service_type_on_a_topic_is_refused(sample):
     _apply_fails(sample, "robot.yaml:19:", "'std_srvs/Trigger' is a service, not a message")
 
 
+@pytest.mark.parametrize(
+    ("written", "fragments"),
+    [
+        # the action's own message: the hint names the action
+        (
+            "diffbot_msgs/DockAction",
+            (
+                "'diffbot_msgs/DockAction' is a message, not an action",
+                "is a message of the action diffbot_msgs/action/Dock; name the action itself: "
+                "type: diffbot_msgs/action/Dock",
+            ),
+        ),
+        (
+            "diffbot_msgs/DockActionGoal",
+            ("name the action itself: type: diffbot_msgs/action/Dock",),
+        ),
+        # a misspelled action: the suggestions are actions
+        ("diffbot_msgs/action/Dok", ("unknown ROS 1 type", "did you mean diffbot_msgs/Dock?")),
+        ("diffbot_msgs/SetSpeedLimit", ("is a service, not an action", "list it under 'services'")),
+    ],
+)
+def test_an_action_entry_names_an_action(sample, written, fragments):
+    _edit(sample, "type: diffbot_msgs/action/Dock", f"type: {written}")
+    _apply_fails(sample, "robot.yaml:33:", *fragments)
+
+
+def test_ros1_pkg_name_is_the_service_when_an_action_has_the_name_too(sample):
+    # nav_msgs has GetMap.srv and GetMap.action: pkg/Name means the service, as rossrv reads it
+    _edit(sample, "type: diffbot_msgs/action/Dock", "type: nav_msgs/GetMap")
+    err = _apply_fails(sample, "'nav_msgs/GetMap' is a service, not an action")
+    assert "in ROS 1, pkg/Name means the service; write nav_msgs/action/GetMap" in err
+    _edit(sample, "type: nav_msgs/GetMap", "type: nav_msgs/action/GetMap")
+    assert run_cli("apply", str(sample / "robot.yaml")).code == 0  # the hint works when followed
+
+
+def test_every_unknown_type_of_the_manifest_is_reported_at_once(sample):
+    _edit(sample, "type: nav_msgs/Odometry", "type: nav_msgs/Odometri")
+    _edit(sample, "type: diffbot_msgs/action/Dock", "type: diffbot_msgs/action/Dok")
+    _apply_fails(sample, "robot.yaml:19:", "robot.yaml:33:", "'nav_msgs/Odometri'", "Dok'")
+
+
 def test_unknown_key_is_refused_with_the_nearest_key(sample):
     _edit(sample, "direction: publish, rate: 10", "direction: publish, rat: 10")
     _apply_fails(sample, "robot.yaml:18:", "did you mean 'rate'")

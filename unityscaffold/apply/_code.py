@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TypeVar
 
 from unityscaffold.apply._moves import Moves
 from unityscaffold.apply._rossharp import RESERVED_NAMES
@@ -25,7 +24,7 @@ from unityscaffold.codegen.scripts import (
     SubscriberScript,
     render_script,
 )
-from unityscaffold.errors import LocatedError, UserError, located_at
+from unityscaffold.errors import Diagnostic, LocatedError, UserError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.interfaces.model import (
     ActionSpec,
@@ -75,21 +74,22 @@ class CodePlan:
     messages: GeneratedCode  # the message, service and action classes (under Messages/)
 
 
-_Spec = TypeVar("_Spec", MessageSpec, ServiceSpec, ActionSpec)
-_WANTED: dict[type, tuple[str, str, str]] = {
-    # kind -> (what, an example, the manifest section)
-    MessageSpec: ("a message", "geometry_msgs/Twist", "topics"),
-    ServiceSpec: ("a service", "std_srvs/Trigger", "services"),
-    ActionSpec: ("an action", "control_msgs/action/GripperCommand", "actions"),
+_Spec = MessageSpec | ServiceSpec | ActionSpec
+_WANTED: dict[type, tuple[str, str, str, InterfaceKind]] = {
+    # kind -> (what, an example, the manifest section, the files that define it)
+    MessageSpec: ("a message", "geometry_msgs/Twist", "topics", InterfaceKind.MSG),
+    ServiceSpec: ("a service", "std_srvs/Trigger", "services", InterfaceKind.SRV),
+    ActionSpec: ("an action", "move_base_msgs/action/MoveBase", "actions", InterfaceKind.ACTION),
 }
 
 
 def _resolve(registry: Registry, item: Entry, kind: type[_Spec]) -> _Spec:
+    """The interface an entry names, of the kind its section takes."""
     where = item.locations.of("type")
     with located_at(where):
-        found = registry.get(item.type)
+        found = registry.get(item.type, kinds=(_WANTED[kind][3],))
     if not isinstance(found, kind):
-        wanted, example, _ = _WANTED[kind]
+        wanted, example, _, _ = _WANTED[kind]
         raise LocatedError.at(
             where,
             f"'{item.type}' is {_WANTED[type(found)][0]}, not {wanted}",
@@ -97,6 +97,25 @@ def _resolve(registry: Registry, item: Entry, kind: type[_Spec]) -> _Spec:
             hint=_kind_hint(registry, item.type, found, kind),
         )
     return found
+
+
+def _resolve_all(manifest: Manifest, registry: Registry) -> list[_Entry]:
+    """Every entry's interface; the types not found are all reported at once."""
+    kinds: list[tuple[Entry, type[_Spec]]] = [
+        *((t, MessageSpec) for t in manifest.topics),
+        *((s, ServiceSpec) for s in manifest.services),
+        *((a, ActionSpec) for a in manifest.actions),
+    ]
+    items: list[_Entry] = []
+    problems: list[Diagnostic] = []
+    for item, kind in kinds:
+        try:
+            items.append((item, _resolve(registry, item, kind)))
+        except LocatedError as error:
+            problems += error.diagnostics
+    if problems:
+        raise LocatedError(problems)
+    return items
 
 
 def _kind_hint(registry: Registry, name: str, found: Interface, kind: type) -> str:
@@ -110,7 +129,7 @@ def _kind_hint(registry: Registry, name: str, found: Interface, kind: type) -> s
             )
     spelled = f"{found.package}/action/{found.name}"
     if kind is ActionSpec and registry.find(spelled) is not None:
-        return f"in ROS 1, pkg/Name means the {found.kind.value}; write {spelled}"
+        return f"in ROS 1, pkg/Name means the {_WANTED[type(found)][0][2:]}; write {spelled}"
     return f"list it under '{_WANTED[type(found)][2]}'"
 
 
@@ -124,7 +143,7 @@ def _action_of(registry: Registry, message: MessageSpec) -> str | None:
     return None
 
 
-_Entry = tuple[Entry, MessageSpec | ServiceSpec | ActionSpec]
+_Entry = tuple[Entry, _Spec]
 
 # ROS 1 std_msgs types whose ROS# class is a hand-written time primitive of another shape.
 _MISSHAPEN_IN_ROSSHARP = ("std_msgs/Time", "std_msgs/Duration")
@@ -307,10 +326,7 @@ def plan_code(
     """Everything the manifest's topics and services need in C#, as desired files; a script
     moved from an earlier output folder keeps its GUIDs (``moves``)."""
     _check_class_names(manifest, scripts, moves)
-    items: list[_Entry] = []
-    items += [(t, _resolve(registry, t, MessageSpec)) for t in manifest.topics]
-    items += [(s, _resolve(registry, s, ServiceSpec)) for s in manifest.services]
-    items += [(a, _resolve(registry, a, ActionSpec)) for a in manifest.actions]
+    items = _resolve_all(manifest, registry)
     _check_time_messages(manifest, registry, items)
     messages = _generate(manifest, registry, items)
     messages_dir = manifest.output_dir / "Messages"

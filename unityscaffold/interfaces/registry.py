@@ -256,11 +256,18 @@ class Registry:
                     return _part_named(self.parse(file), short)
         return None
 
-    def get(self, name: str, *, used_at: SourceLocation | None = None) -> Interface:
-        """Like ``find``, but an unknown name raises ``TypeNotFound`` with suggestions."""
+    def get(
+        self,
+        name: str,
+        *,
+        used_at: SourceLocation | None = None,
+        kinds: tuple[InterfaceKind, ...] = (),
+    ) -> Interface:
+        """Like ``find``, but an unknown name raises ``TypeNotFound`` with suggestions (of
+        ``kinds`` only, when given: where only an action fits, a message is no suggestion)."""
         found = self.find(name)
         if found is None:
-            raise self._not_found(name, used_at)
+            raise self._not_found(name, used_at, kinds=kinds)
         return found
 
     def message(self, full_name: str, *, used_at: SourceLocation | None = None) -> MessageSpec:
@@ -291,20 +298,28 @@ class Registry:
             kinds = [k for k in kinds if k is not InterfaceKind.ACTION]
         return kinds
 
-    def suggestions(self, name: str) -> list[str]:
-        """Known names close to ``name``: those of its own package first."""
+    def suggestions(self, name: str, kinds: tuple[InterfaceKind, ...] = ()) -> list[str]:
+        """Known names close to ``name`` (of ``kinds`` when given): its own package's first."""
         parts = name.strip().split("/")
         package, short = parts[0], parts[-1]
-        own = [k for k in self._files if k.package == package]
+        keys = [k for k in self._files if not kinds or k.kind in kinds]
+        own = [k for k in keys if k.package == package]
         close = difflib.get_close_matches(short, sorted({k.name for k in own}), n=3, cutoff=0.6)
         found = [self._spelled(k) for c in close for k in sorted(own, key=str) if k.name == c]
-        others = difflib.get_close_matches(name, self.known_names(), n=3, cutoff=0.6)
+        names = sorted(self._spelled(k) for k in keys) if kinds else self.known_names()
+        others = difflib.get_close_matches(name, names, n=3, cutoff=0.6)
         return list(dict.fromkeys([*found, *others]))[:3]
 
     def looked_in(self) -> str:
         return ", ".join(f"{r.path} ({r.origin})" for r in self.roots)
 
-    def _not_found(self, name: str, used_at: SourceLocation | None, note: str = "") -> UserError:
+    def _not_found(
+        self,
+        name: str,
+        used_at: SourceLocation | None,
+        note: str = "",
+        kinds: tuple[InterfaceKind, ...] = (),
+    ) -> UserError:
         parts = name.strip().split("/")
         message = note or f"unknown {self.dialect.label} type '{name}'"
         advice = ""
@@ -315,7 +330,7 @@ class Registry:
             advice = f"did you mean package {' or '.join(packages)}?" if packages else ""
             looked = f"packages are looked for in: {self.looked_in()}"
         else:
-            close = self.suggestions(name)
+            close = self.suggestions(name, kinds)
             advice = f"did you mean {' or '.join(close)}?" if close else ""
         hint = f"{advice} {looked}" if advice else looked
         if used_at is not None:

@@ -47,7 +47,7 @@ EXPECT_SCENE = "a .unity file inside the project, e.g. Assets/Scenes/Main.unity"
 EXPECT_SCRIPT = "a class name such as TwistSubscriber, or a .cs file inside the project"
 EXPECT_MSG_TYPE = "a message type such as geometry_msgs/Twist"
 EXPECT_SRV_TYPE = "a service type such as std_srvs/Trigger"
-EXPECT_ACTION_TYPE = "an action type such as control_msgs/action/GripperCommand"
+EXPECT_ACTION_TYPE = "an action type such as move_base_msgs/action/MoveBase"
 
 
 @dataclass(frozen=True, slots=True)
