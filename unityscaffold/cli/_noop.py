@@ -240,9 +240,9 @@ def _hook(event: str, args: tuple[Any, ...]) -> None:
 def _pure_python_probes() -> bool:
     """Whether ``os.path``'s probes go through ``os.stat``/``os.lstat`` (so they are seen).
 
-    Windows' Python 3.12+ answers ``isdir``/``isfile``/``exists`` in C, and Python 3.10's
-    pathlib kept its own reference to ``os.stat``; there nothing is recorded rather than miss
-    a probe.
+    Not on Windows (``ntpath``; its Python 3.12+ answers ``isdir``/``isfile``/``exists`` in
+    C) nor Python 3.10 (its pathlib kept its own reference to ``os.stat``): there nothing is
+    recorded rather than miss a probe.
     """
     import genericpath
     import posixpath
