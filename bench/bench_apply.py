@@ -150,11 +150,16 @@ def main() -> None:
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
         ENV.update(child_env(Path(work)))
+        # `python -m` puts the current folder first on sys.path: run from inside another
+        # source tree, the children would import that tree instead of this one
+        here = os.getcwd()
+        os.chdir(work)
         print(f"load average before: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
         sample(args.rounds, Path(work))
         if args.sizes:
             sweep(args.sizes)
         print(f"load average after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+        os.chdir(here)
 
 
 def sample(rounds: int, work: Path) -> None:

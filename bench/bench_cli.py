@@ -82,7 +82,9 @@ class Side:
     def timed(self, label: str, command: list[str], *, replay: bool = True) -> None:
         env = self.env if replay else {**self.env, "UNITYSCAFFOLD_NO_REPLAY": "1"}
         start = time.perf_counter()
-        cpu = run_timed(command, env)
+        # from the side's own folder: `python -m` puts the current folder first on sys.path,
+        # so run from inside a source tree every side would import that tree
+        cpu = run_timed(command, env, cwd=self.project.parent)
         self.times.setdefault(label, []).append((time.perf_counter() - start, cpu))
 
     def round(self) -> None:
