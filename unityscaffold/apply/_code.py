@@ -1,4 +1,5 @@
-"""The code half of a plan: message classes, per-topic scripts, and their ``.meta`` files.
+"""The code half of a plan: message classes, a script per topic, service and action, and their
+``.meta`` files.
 
 Layout under the manifest's ``output`` folder: ``Messages/<Pkg>/<msg|srv|action>/<Class>.cs``
 (the C# generator's layout) and ``Scripts/<Class>.cs`` with the user's half beside it as
@@ -323,8 +324,8 @@ def plan_code(
     scripts: dict[str, ScriptInfo],
     moves: Moves | None = None,
 ) -> CodePlan:
-    """Everything the manifest's topics and services need in C#, as desired files; a script
-    moved from an earlier output folder keeps its GUIDs (``moves``)."""
+    """Everything the manifest's topics, services and actions need in C#, as desired files; a
+    script moved from an earlier output folder keeps its GUIDs (``moves``)."""
     _check_class_names(manifest, scripts, moves)
     items = _resolve_all(manifest, registry)
     _check_time_messages(manifest, registry, items)

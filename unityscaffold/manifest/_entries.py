@@ -161,16 +161,25 @@ def _action_part_hint(value: str) -> str:
     )
 
 
-def _no_action_part(r: Reader, m: YMap, ctx: Context, expected: str) -> bool:
+def _no_action_part(
+    r: Reader, m: YMap, ctx: Context, expected: str, *, in_actions: bool = False
+) -> bool:
     """False (reported) for a ROS 2 type that names a part of an action, such as the
     ``X_SendGoal`` service or the ``X_FeedbackMessage`` message, which only the action's own
     entry can use (rosbridge has no operations for them alone)."""
     value = _type_value(m)
     if ctx.ros != 2 or value is None or not value.endswith(_ROS2_ACTION_SUFFIXES):
         return True
-    if value.count("/") == 2 and value.split("/")[1] == "action":
+    if not in_actions and value.count("/") == 2 and value.split("/")[1] == "action":
         return True  # refused by the section's pattern, with the same hint
-    r.invalid(m.get("type"), expected, hint=_action_part_hint(value))  # type: ignore[arg-type]
+    package, *_, name = value.split("/")
+    owner = f"{package}/action/{name[: name.rindex('_')]}"
+    hint = (
+        f"'{value}' is part of the action {owner}; name the action itself: type: {owner}"
+        if in_actions
+        else _action_part_hint(value)
+    )
+    r.invalid(m.get("type"), expected, hint=hint)  # type: ignore[arg-type]
     return False
 
 
@@ -313,6 +322,8 @@ def read_action(r: Reader, node: YNode, ctx: Context) -> Action | None:
         return None
     name = _ros_name(r, m, ctx)
     type_ = r.text(m, "type", EXPECT_ACTION_TYPE, spec.ACTION_TYPE, hint=_type_hint(m, "action"))
+    if type_ is not None and not _no_action_part(r, m, ctx, EXPECT_ACTION_TYPE, in_actions=True):
+        type_ = None
     choice = r.choice(m, "role", [x.value for x in Role])
     role = Role(choice) if choice else None
     action = Action(
