@@ -38,3 +38,30 @@ def test_changing_output_moves_scripts_with_their_guids_and_code(tmp_path: Path)
     assert sorted(p.name for p in assets.iterdir()) == ["Ros", "Ros.meta", "Scenes", "Scenes.meta"]
     check = run_cli("apply", "--check", str(manifest))
     assert check.code == 0, check.out + check.err
+
+
+def test_moving_output_and_changing_a_type_at_once_is_done_in_one_apply(tmp_path: Path) -> None:
+    """An untouched user half is made afresh for the new type where it moves to (it was moved
+    as it was, so the next apply rewrote it: apply --check failed right after an apply); an
+    edited one keeps its content, and is said to be written for the earlier type."""
+    sample = tmp_path / "sample_project"
+    shutil.copytree(REPO / "sample_project", sample)
+    old = sample / "unity" / "Assets" / "RosGenerated" / "Scripts"
+    edited = old / "OdomSubscriber.User.cs"
+    edited.write_text(edited.read_text() + "// my code\n")
+    manifest = sample / "robot.yaml"
+    manifest.write_text(
+        manifest.read_text()
+        .replace("output: Assets/RosGenerated", "output: Assets/Gen")
+        .replace("/cmd_vel, type: geometry_msgs/Twist", "/cmd_vel, type: std_msgs/String")
+        .replace("/odom, type: nav_msgs/Odometry", "/odom, type: std_msgs/String")
+    )
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.out + run.err
+    new = sample / "unity" / "Assets" / "Gen" / "Scripts"
+    assert "MessageTypes.Std.String message" in (new / "CmdVelPublisher.User.cs").read_text()
+    assert (new / "OdomSubscriber.User.cs").read_text().endswith("// my code\n")
+    assert "Assets/Gen/Scripts/OdomSubscriber.User.cs was written for an earlier version" in run.out
+    assert "CmdVelPublisher.User.cs was written" not in run.out
+    check = run_cli("apply", "--check", str(manifest))
+    assert check.code == 0, check.out + check.err

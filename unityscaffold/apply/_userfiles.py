@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from unityscaffold.apply._code import CodePlan
+from unityscaffold.apply._code import CodePlan, PlannedScript
 from unityscaffold.apply._lock import LockFile, recorded, sha256
 from unityscaffold.apply._moves import Moves
 from unityscaffold.fileout import DesiredFile, same_text
@@ -59,9 +59,17 @@ def plan_user_files(
             except OSError:
                 old = None
             if old is not None:
-                result.desired.append(DesiredFile(script.user_path, old, create_only=True))
-                result.digests[relative] = lock.user_files[source]
                 result.moved.add(source)
+                if recorded(old, lock.user_files[source]):
+                    # never edited: made afresh, for what the generated half is now (its
+                    # type may have changed in the same run)
+                    result.desired.append(DesiredFile(script.user_path, fresh, create_only=True))
+                    result.digests[relative] = sha256(fresh)
+                else:
+                    result.desired.append(DesiredFile(script.user_path, old, create_only=True))
+                    result.digests[relative] = lock.user_files[source]
+                    if lock.user_files[source] != sha256(fresh):
+                        result.notes.append(_earlier(relative, script))
                 continue
         if current is None or digest is None or same_text(current, fresh):
             # New, unknown to the lock (kept as it is), or already as apply would create it.
@@ -74,11 +82,14 @@ def plan_user_files(
         else:
             result.digests[relative] = digest
             if digest != sha256(fresh) and _regenerates(script.path, code):
-                # Says what the class is generated for now, so that after a rename it cannot
-                # read as if the new topic were the earlier version.
-                result.notes.append(
-                    f"{relative} was written for an earlier version of {script.view.class_name}, "
-                    f"which is now generated for {script.entry}; check that its methods still "
-                    f"match {script.path.name}"
-                )
+                result.notes.append(_earlier(relative, script))
     return result
+
+
+def _earlier(relative: str, script: PlannedScript) -> str:
+    # Says what the class is generated for now, so that after a rename it cannot read as if
+    # the new topic were the earlier version.
+    return (
+        f"{relative} was written for an earlier version of {script.view.class_name}, which is "
+        f"now generated for {script.entry}; check that its methods still match {script.path.name}"
+    )
