@@ -303,10 +303,16 @@ class Recorder:
 
     def _ours(self, path: str) -> bool:
         """Paths that are not inputs: the cache folder and Python's bytecode."""
-        return (
-            path.startswith(self.root)
-            or "__pycache__" in path
-            or bool(self.pycache and path.startswith(self.pycache))
+        if path == self.root or path.startswith(self.root + os.sep):
+            return True
+        if self.pycache and path.startswith(self.pycache + os.sep):
+            return True
+        folder, name = os.path.split(path)
+        if name == "__pycache__":
+            return True  # made by the import system to write bytecode into
+        # a module's bytecode, or the temporary file the import system writes it to
+        return os.path.basename(folder) == "__pycache__" and (
+            name.endswith(".pyc") or ".pyc." in name
         )
 
     def _seen(self, target: Any, how: int) -> None:
