@@ -31,17 +31,18 @@ version: 1
 ros: {ros}
 scene: Assets/Scenes/Main.unity
 interfaces: [ws]
-actions:
+{namespace}actions:
   - {{name: /dock, type: diffbot_msgs/action/Dock, role: client, gameobject: Robot}}
   - {{name: /charger/dock, type: diffbot_msgs/Dock, role: server, gameobject: Charger}}
 """
 
 
-def _applied(tmp_path: Path, ros: int) -> Path:
+def _applied(tmp_path: Path, ros: int, namespace: str | None = None) -> Path:
     project = tmp_path / f"ros{ros}"
     assert run_cli("init", str(project), "--ros", str(ros)).code == 0
     shutil.copytree(SAMPLE_INTERFACES, project / "ws")
-    (project / "robot.yaml").write_text(MANIFEST.format(ros=ros), encoding="utf-8")
+    text = MANIFEST.format(ros=ros, namespace=f"namespace: {namespace}\n" if namespace else "")
+    (project / "robot.yaml").write_text(text, encoding="utf-8")
     done = run_cli("apply", str(project / "robot.yaml"))
     assert done.code == 0, done.err
     assert "add DockActionClient to Robot" in done.out
@@ -75,12 +76,15 @@ def _rossharp() -> Path:
     return package
 
 
+# With a namespace of its own every message class is generated there, while ROS#'s action
+# bases still take ROS#'s GoalID, GoalStatus and Header.
+@pytest.mark.parametrize("namespace", [None, "MyRobot.Ros"])
 @pytest.mark.parametrize("ros", [1, 2])
 def test_action_scripts_compile_against_rossharps_client(
-    mcs: str, tmp_path: Path, ros: int
+    mcs: str, tmp_path: Path, ros: int, namespace: str | None
 ) -> None:
     package = _rossharp()
-    project = _applied(tmp_path, ros)
+    project = _applied(tmp_path, ros, namespace)
     build = tmp_path / "build"
     client = (build_ros2_client if ros == 2 else build_client)(mcs, package, build)
     engine = build / "UnityEngine.dll"
