@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import marshal
 import os
+import random
 import shutil
 import subprocess
 import sys
@@ -295,3 +296,54 @@ def test_a_run_that_starts_a_process_leaves_no_record(
     settle()
     assert scaffold(capsysbinary, "apply")[0] == 0
     assert records(sample) == []
+
+
+def _mutate(path: Path) -> Callable[[], None]:
+    """Change ``path`` in the least visible way its kind allows; returns the undo."""
+    if path.is_dir():
+        probe = path / ".probe"
+        probe.write_bytes(b"")
+        return probe.unlink
+    if not path.exists():
+        path.write_bytes(b"")
+        return path.unlink
+    before = path.stat()
+    data = path.read_bytes()
+    middle = len(data) // 2
+    changed = data[:middle] + bytes([data[middle] ^ 1]) + data[middle + 1 :] if data else b"x"
+    path.write_bytes(changed)
+    if len(changed) == len(data):  # same size: the mtime set back too, so only ctime tells
+        os.utime(path, ns=(before.st_atime_ns, before.st_mtime_ns))
+
+    def undo() -> None:
+        path.write_bytes(data)
+
+    return undo
+
+
+def test_any_path_the_record_holds_changed_in_any_way_makes_the_run_plan_again(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], planned: list[list[str]]
+) -> None:
+    args = ("apply", "--check")
+    settle()
+    expected = scaffold(capsysbinary, *args)
+    [record] = records(sample)
+    inside = str(sample) + os.sep
+    candidates = sorted(
+        {
+            path
+            for path, how, facts in marshal.loads(record.read_bytes())[3]
+            if how != 2 and path.startswith(inside) and Path(path).parent.is_dir()
+        }
+    )
+    assert len(candidates) > 50
+    for path in random.Random(11).sample(candidates, 15):
+        calls = len(planned)
+        assert scaffold(capsysbinary, *args) == expected
+        assert len(planned) == calls  # replayed
+        undo = _mutate(Path(path))
+        scaffold(capsysbinary, *args)
+        assert len(planned) == calls + 1, f"a change of {path} was not seen"
+        undo()
+        settle()
+        assert scaffold(capsysbinary, *args) == expected  # plans again and records
