@@ -54,6 +54,11 @@ def test_ros1_sample_loads_every_key_with_its_value() -> None:
     assert joints.class_name == "Joints"
     assert [s.class_name for s in m.services] == ["ResetClient", "SetModeServer"]
     assert m.services[1].role is Role.SERVER and m.services[1].create is False
+    move_base, dock = m.actions
+    assert (move_base.type, move_base.role) == ("move_base_msgs/action/MoveBase", Role.CLIENT)
+    assert (move_base.class_name, move_base.gameobject) == ("MoveBaseActionClient", "Robot")
+    assert (dock.role, dock.class_name, dock.create) == (Role.SERVER, "DockingStation", False)
+    assert (dock.gameobject, dock.scene) == ("Ros/Connector", "Assets/Scenes/Other.unity")
     assert m.scenes == ("Assets/Scenes/Main.unity", "Assets/Scenes/Other.unity")
 
 
@@ -198,12 +203,15 @@ def test_starter_manifest_is_valid(ros: int) -> None:
     assert int(m.ros) == ros and m.scene == "Assets/Scenes/Main.unity"
 
 
-def test_starter_manifest_examples_are_valid_once_uncommented() -> None:
-    text = starter_manifest(2, "Assets/Scenes/Main.unity")
+@pytest.mark.parametrize("ros", [1, 2])
+def test_starter_manifest_examples_are_valid_once_uncommented(ros: int) -> None:
+    text = starter_manifest(ros, "Assets/Scenes/Main.unity")
     uncommented = re.sub(r"(?m)^#(  - |    \w)", r"\1", text)
     m = parse_manifest(uncommented, Path("/p/robot.yaml"))
     assert [t.class_name for t in m.topics] == ["CmdVelPublisher", "OdomSubscriber"]
     assert len(m.services) == 1 and len(m.components) == 1
+    # ROS 2's standard interfaces define no action: its starter only describes the section
+    assert [a.class_name for a in m.actions] == (["MoveBaseActionClient"] if ros == 1 else [])
 
 
 def test_starter_manifest_rejects_bad_arguments() -> None:
