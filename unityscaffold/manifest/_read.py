@@ -30,7 +30,8 @@ def describe(node: YNode) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return f"'{value}'"
+        # control characters (a tab, an escape sequence) shown escaped, not sent to the terminal
+        return f"'{value}'" if value.isprintable() else repr(value)
     return str(value)
 
 
