@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import json
 from pathlib import Path
 
@@ -147,3 +148,21 @@ def test_every_type_hash_equals_the_shipped_json(registry, ros2_share):
             if item.full_name in defined and identity.type_hash(item) != expected[item.full_name]
         ]
     assert (missing, extra, mismatches) == ([], [], [])
+
+
+def test_each_type_hash_is_the_sha256_of_its_description_as_one_json_text(registry):
+    """``type_hash`` puts the JSON text together from each description's own text, made once
+    per type; it must be the text ``json.dumps`` gives for the whole description."""
+    identity = Ros2Identity(registry)
+    for file in registry.files():
+        interface = registry.parse(file)
+        own = [interface]
+        if isinstance(interface, ServiceSpec):
+            own += list(interface.parts)
+        if isinstance(interface, ActionSpec):
+            own += list(interface.messages) + list(interface.services)
+        for item in own:
+            description = identity.description(item)
+            text = json.dumps(description, ensure_ascii=True, separators=(", ", ": "))
+            digest = hashlib.sha256(text.encode("utf-8")).hexdigest()
+            assert identity.type_hash(item) == f"RIHS01_{digest}", item.full_name

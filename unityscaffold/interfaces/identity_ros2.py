@@ -81,11 +81,19 @@ def _describe(name: str, fields: tuple[Field, ...]) -> _Description:
     }
 
 
+def _json(value: Any) -> str:
+    """JSON text as rosidl hashes it (``json.dumps`` with ``", "`` and ``": "`` separators)."""
+    return json.dumps(value, ensure_ascii=True, separators=(", ", ": "))
+
+
 class Ros2Identity:
     """RIHS01 hashes over one registry."""
 
     def __init__(self, registry: Registry) -> None:
         self.registry = registry
+        # per message the registry resolves: its description's JSON text, and the messages
+        # its fields name (every hash repeats the descriptions of all the types it uses)
+        self._described: dict[str, tuple[str, list[str]]] = {}
 
     def _pseudo_fields(self, interface: Interface) -> tuple[Field, ...]:
         """The fields rosidl gives a service or action type to describe it."""
@@ -141,5 +149,33 @@ class Ros2Identity:
         }
 
     def type_hash(self, interface: Interface) -> str:
-        text = json.dumps(self.description(interface), ensure_ascii=True, separators=(", ", ": "))
+        """The RIHS01 hash: of ``description(interface)`` as JSON, whose text is put together
+        from each description's own JSON text (the same text, as JSON writes a dict's items and
+        a list's values in order with the same separators); descriptions of registry types are
+        made once per ``Ros2Identity``."""
+        local = self._local_types(interface)
+        fields = self._pseudo_fields(interface)
+        referenced: dict[str, str] = {}
+        pending = [f.type.base for f in fields if f.type.is_message]
+        while pending:
+            name = pending.pop()
+            if name not in referenced:
+                referenced[name], uses = self._described_text(name, local)
+                pending += uses
+        own = _json(_describe(interface.full_name, fields))
+        others = ", ".join(referenced[n] for n in sorted(referenced))
+        text = f'{{"type_description": {own}, "referenced_type_descriptions": [{others}]}}'
         return "RIHS01_" + hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+    def _described_text(self, name: str, local: dict[str, Interface]) -> tuple[str, list[str]]:
+        """``name``'s description as JSON text, and the message types its fields name."""
+        found = self._described.get(name) if name not in local else None
+        if found is None:
+            fields = self._pseudo_fields(local.get(name) or self.registry.message(name))
+            found = (
+                _json(_describe(name, fields)),
+                [f.type.base for f in fields if f.type.is_message],
+            )
+            if name not in local:  # a local type is its owner's own: not shared
+                self._described[name] = found
+        return found
