@@ -41,6 +41,7 @@ BASE: dict[str, Any] = {
         },
     ],
     "services": [{"name": "/reset", "type": "std_srvs/Trigger", "role": "client"}],
+    "actions": [{"name": "/dock", "type": "diffbot_msgs/action/Dock", "role": "server"}],
     "components": [{"script": "TwistSubscriber", "gameobject": "Robot", "fields": {"Topic": "/x"}}],
     "objects": [
         {
@@ -142,6 +143,17 @@ VARIANTS: list[tuple[str, Any]] = [
     # types, URLs, GameObjects
     ("topics.0.type", "geometry_msgs/srv/Twist"),
     ("services.0.type", "std_srvs/srv/Trigger"),
+    # a ROS 2 action's parts are used only through its action (any ROS 1 name may end so)
+    ("topics.0.type", "nav2_msgs/msg/NavigateToPose_FeedbackMessage"),
+    ("topics.0.type", "my_msgs/Dock_Goal"),
+    ("services.0.type", "nav2_msgs/srv/NavigateToPose_SendGoal"),
+    ("services.0.type", "nav2_msgs/NavigateToPose_GetResult"),
+    ("actions.0.type", "nav2_msgs/action/NavigateToPose_SendGoal"),
+    ("actions.0.type", "nav2_msgs/action/NavigateToPose_Result"),
+    ("actions.0.type", "nav2_msgs/msg/NavigateToPose"),
+    ("actions.0.type", "nav2_msgs/NavigateToPose"),
+    ("actions.0.role", "provider"),
+    ("actions.0.name", "/nav__igate"),
     ("connector.url", "wss://robot:9090/bridge"),
     ("connector.url", "http://robot:9090"),
     ("topics.0.gameobject", "Robot/base_link"),

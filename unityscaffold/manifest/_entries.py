@@ -7,12 +7,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.fileout import MAX_NAME_BYTES
-from unityscaffold.interfaces.suffixes import (
-    ROS2_ACTION_PARTS,
-    ROS2_FEEDBACK_MESSAGE,
-    ROS2_GET_RESULT,
-    ROS2_SEND_GOAL,
-)
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._fields import read_fields
 from unityscaffold.manifest._paths import project_path
@@ -127,9 +121,7 @@ def _ros_name(r: Reader, m: YMap, ctx: Context) -> str | None:
 
 _KIND_LABEL = {"msg": "message", "srv": "service", "action": "action"}
 _KIND_SECTION = {"msg": "topics", "srv": "services", "action": "actions"}
-# What rosidl appends to an action's name for the messages and services it derives; ROS 2
-# interface names have no '_', so a name ending in one of these is always such a part.
-_ROS2_ACTION_SUFFIXES = (*ROS2_ACTION_PARTS, ROS2_FEEDBACK_MESSAGE, ROS2_SEND_GOAL, ROS2_GET_RESULT)
+_ROS2_ACTION_PART = re.compile(spec.ROS2_ACTION_PART)
 
 
 def _type_value(m: YMap) -> str | None:
@@ -145,7 +137,7 @@ def _type_hint(m: YMap, own: str) -> str | None:
         return None
     for kind, label in _KIND_LABEL.items():
         if kind != own and f"/{kind}/" in value:
-            if kind == "action" and value.endswith(_ROS2_ACTION_SUFFIXES):
+            if kind == "action" and _ROS2_ACTION_PART.search(value):
                 return _action_part_hint(value)
             article = "an" if kind == "action" else "a"
             return f"'{value}' is {article} {label} type; list it under '{_KIND_SECTION[kind]}'"
@@ -168,7 +160,7 @@ def _no_action_part(
     ``X_SendGoal`` service or the ``X_FeedbackMessage`` message, which only the action's own
     entry can use (rosbridge has no operations for them alone)."""
     value = _type_value(m)
-    if ctx.ros != 2 or value is None or not value.endswith(_ROS2_ACTION_SUFFIXES):
+    if ctx.ros != 2 or value is None or not _ROS2_ACTION_PART.search(value):
         return True
     if not in_actions and value.count("/") == 2 and value.split("/")[1] == "action":
         return True  # refused by the section's pattern, with the same hint

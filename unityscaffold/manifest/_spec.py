@@ -29,6 +29,9 @@ _WORD = "[A-Za-z][A-Za-z0-9_]*"
 # ROS 1's rule (a part may start with '_' after a '/'); ROS 2 also forbids '__' (ROS2_NAME_NOT).
 ROS_NAME = "^(/[A-Za-z_]|[A-Za-z])[A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*$"
 ROS2_NAME_NOT = "__"
+# What rosidl appends to an action's name for the messages and services it derives; ROS 2
+# interface names have no '_', so a type ending so is a part of an action, used only whole.
+ROS2_ACTION_PART = "_(Goal|Result|Feedback|FeedbackMessage|SendGoal|GetResult)$"
 MSG_TYPE = f"^{_WORD}/(msg/)?{_WORD}$"
 SRV_TYPE = f"^{_WORD}/(srv/)?{_WORD}$"
 ACTION_TYPE = f"^{_WORD}/(action/)?{_WORD}$"
@@ -117,6 +120,7 @@ def patterns() -> dict[str, str]:
         "not_portable": NOT_PORTABLE,
         "not_relative": NOT_RELATIVE,
         "keyword_part": KEYWORD_PART,
+        "ros2_action_part": ROS2_ACTION_PART,
         "guid": GUID,
         "key": KEY,
     }
@@ -255,7 +259,14 @@ TOP = Section(
             "if": {"properties": {"ros": {"const": 2}}, "required": ["ros"]},
             "then": {
                 "properties": {
-                    key: {"items": {"properties": {"name": {"not": {"pattern": ROS2_NAME_NOT}}}}}
+                    key: {
+                        "items": {
+                            "properties": {
+                                "name": {"not": {"pattern": ROS2_NAME_NOT}},
+                                "type": {"not": {"pattern": ROS2_ACTION_PART}},
+                            }
+                        }
+                    }
                     for key in ("topics", "services", "actions")
                 }
             },
