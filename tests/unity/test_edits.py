@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from unityscaffold.errors import LocatedError, UserError
+from unityscaffold.unity import _documents
 from unityscaffold.unity.scene import GameObjectNotFound, SceneDocument
 from unityscaffold.unity.values import AssetRef, Enum, InlineMap, ObjectRef, ScriptRef
 
@@ -172,6 +173,28 @@ def test_new_children_get_their_sibling_index_as_root_order(scene_2020: SceneDoc
         {"fileID": str(first.transform_id)},
         {"fileID": str(second.transform_id)},
     ]
+
+
+def test_a_new_path_is_made_with_one_look_at_the_hierarchy(
+    scene_2022: SceneDocument, assert_sound: Check, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    builds: list[int] = []
+    build = _documents.build_hierarchy
+    monkeypatch.setattr(
+        _documents, "build_hierarchy", lambda docs, by_id: builds.append(1) or build(docs, by_id)
+    )
+    made = scene_2022.ensure_gameobject("Robot/base_link/camera/optical_frame")
+    assert len(builds) == 2  # to find where the path stops, then for the answer
+    assert [go.name for go in scene_2022.gameobjects()][-4:] == [
+        "Robot",
+        "base_link",
+        "camera",
+        "optical_frame",
+    ]
+    assert made.path == "Robot/base_link/camera/optical_frame"
+    parent = scene_2022.find_gameobject("Robot/base_link/camera")
+    assert scene_2022.children(parent) == [made]
+    assert_sound(scene_2022)
 
 
 def test_gameobject_creation_is_refused_unless_asked(scene_2020: SceneDocument) -> None:

@@ -155,22 +155,31 @@ def create_path(
     if parent is not None:
         _require_editable(docs, parent)
         parent_id = parent.file_id
+    made: int | None = None  # the Transform of the level made last
     for level in range(start, len(names)):
         last = level == len(names) - 1
         path = "/".join(names[: level + 1])
-        parent_id = _create(docs, parent_id, path, names[level], ui and last)
+        parent_id, made = _create(docs, parent_id, path, names[level], ui and last, made)
     assert parent_id is not None
     return parent_id
 
 
-def _create(docs: Documents, parent_id: int | None, path: str, name: str, ui: bool) -> int:
+def _create(
+    docs: Documents, parent_id: int | None, path: str, name: str, ui: bool, parent_tr_id: int | None
+) -> tuple[int, int]:
+    """Make one GameObject and its Transform; return their fileIDs. ``parent_tr_id`` is the
+    parent's Transform when this edit just made the parent: the hierarchy, out of date since
+    then, is not rebuilt to find it (a whole-file pass per level of a new path)."""
     era = docs.era
     go_id = stable_file_id(("GameObject", path), _Taken(docs))
     tr_id = stable_file_id(("Transform", path), _Taken(docs, go_id))
-    hierarchy = docs.hierarchy
-    roots = hierarchy.roots
     parent_tr: Doc | None = None
-    if parent_id is None:
+    if parent_tr_id is not None:
+        parent_tr = docs.require(parent_tr_id)
+        order = len(F.list_refs(parent_tr, "m_Children"))
+    elif parent_id is None:
+        hierarchy = docs.hierarchy
+        roots = hierarchy.roots
         if not docs.is_scene and roots:
             raise UserError(
                 f"{docs.path}: a prefab has a single root; '{path}' would be another",
@@ -178,6 +187,7 @@ def _create(docs: Documents, parent_id: int | None, path: str, name: str, ui: bo
             )
         order = len(roots)
     else:
+        hierarchy = docs.hierarchy
         transform_id = hierarchy.nodes[parent_id].transform_id
         parent_tr = docs.get(transform_id) if transform_id is not None else None
         if parent_tr is None:
@@ -207,7 +217,7 @@ def _create(docs: Documents, parent_id: int | None, path: str, name: str, ui: bo
     elif era.scene_roots:
         _append_scene_root(docs, tr_id)
     docs.invalidate()
-    return go_id
+    return go_id, tr_id
 
 
 def _append_scene_root(docs: Documents, file_id: int) -> None:

@@ -13,7 +13,7 @@ import yaml
 
 from unityscaffold.errors import LocatedError, SourceLocation
 
-__all__ = ["Doc", "SplitFile", "split_text"]
+__all__ = ["Doc", "SplitFile", "is_reference_list", "split_text"]
 
 HEADER_RE = re.compile(r"^--- !u!(\d+) &(-?\d+)( stripped)?$", re.M)
 _ANY_HEADER_RE = re.compile(r"^---", re.M)
@@ -150,6 +150,13 @@ def _split_whole(text: str) -> SplitFile | None:
     return SplitFile(prolog, docs, False)
 
 
+def is_reference_list(body: str) -> bool:
+    """Whether a document's body (below its header) has the shape Unity writes SceneRoots in:
+    a type line, fields with integer values, then one list of references. Text of this shape
+    is always valid YAML, so it needs no parse to tell."""
+    return _LIST_DOC_RE.fullmatch(body) is not None
+
+
 def _malformed(text: str, path: str) -> LocatedError:
     bad = next(
         m.start() for m in _ANY_HEADER_RE.finditer(text) if not HEADER_RE.match(text, m.start())
@@ -189,7 +196,7 @@ def _check_complete(text: str, path: str, docs: list[Doc]) -> None:
         )
     last = docs[-1]
     body = last.text[last.text.index("\n") + 1 :]
-    if _LIST_DOC_RE.fullmatch(body):
+    if is_reference_list(body):
         return  # a SceneRoots document as Unity writes it: this shape is always whole YAML
     if len(body) > 65536:
         # a long SceneRoots list: complete item lines up to the final newline show it is whole

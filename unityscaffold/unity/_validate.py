@@ -20,7 +20,7 @@ from unityscaffold.errors import Diagnostic, SourceLocation
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity._links import Links
-from unityscaffold.unity._split import Doc
+from unityscaffold.unity._split import Doc, is_reference_list
 
 __all__ = ["check_docs", "validate_docs"]
 
@@ -302,8 +302,11 @@ def _scene_roots(loc: _Locator, links: Links, docs: Sequence[Doc]) -> list[Diagn
 
 
 def _parses(loc: _Locator, doc: Doc) -> list[Diagnostic]:
+    body = doc.text[doc.text.index("\n") + 1 :]
+    if is_reference_list(body):
+        return []  # SceneRoots gaining a root: no YAML parse of a list with a line per root
     try:
-        yaml.load(doc.text[doc.text.index("\n") + 1 :], Loader=_BaseLoader)
+        yaml.load(body, Loader=_BaseLoader)
     except yaml.YAMLError as exc:
         message = str(exc).strip().split("\n")[0]
         return [loc.at(doc, None, f"is not valid YAML after editing ({message})")]
