@@ -144,6 +144,29 @@ def test_showing_a_type_with_an_unknown_field_type_names_that_field(ros, tmp_pat
     )
 
 
+@pytest.mark.parametrize(("ros1_type", "ros2_type"), [("time", "Time"), ("duration", "Duration")])
+@pytest.mark.parametrize("command", ["show", "gen"])
+def test_a_ros2_field_of_ros1_time_is_refused_at_its_line_with_a_hint_that_works(
+    ros1_type, ros2_type, command, tmp_path
+):
+    """rosidl's parser takes ``time`` for compatibility, but it has no ROS 2 type id: the
+    type hash raised KeyError (exit 3)."""
+    build_tree(
+        tmp_path, {"ws/p/msg/A.msg": f"int32 a\n{ros1_type} t\n", "ws/p/msg/Uses.msg": "A a\n"}
+    )
+    args = ["--ros", "2", "--no-env", "--path", str(tmp_path / "ws")]
+    out = ["-o", str(tmp_path / "out")] if command == "gen" else []
+    run = run_cli("msgs", command, "p/msg/Uses", *args, *out)
+    assert run.code == 2 and "Traceback" not in run.err
+    assert run.err == (
+        f"{tmp_path / 'ws/p/msg/A.msg'}:2:1: error: '{ros1_type}' is a ROS 1 type; ROS 2 has no "
+        f"type hash or code for it\n  hint: write builtin_interfaces/{ros2_type} instead\n"
+    )
+    assert not (tmp_path / "out").exists()
+    (tmp_path / "ws/p/msg/A.msg").write_text(f"int32 a\nbuiltin_interfaces/{ros2_type} t\n")
+    assert run_cli("msgs", command, "p/msg/Uses", *args, *out).code == 0
+
+
 def test_unknown_type_suggests_close_names():
     run = run_cli("msgs", "show", "geometry_msgs/Twst", "--ros", "2", "--no-env")
     assert run.code == 2

@@ -14,6 +14,7 @@ import hashlib
 import json
 from typing import Any
 
+from unityscaffold.errors import LocatedError, SourceLocation
 from unityscaffold.interfaces.model import (
     ActionSpec,
     ArrayKind,
@@ -72,13 +73,26 @@ def _field_type(ref: TypeRef) -> dict[str, Any]:
     }
 
 
-def _describe(name: str, fields: tuple[Field, ...]) -> _Description:
-    return {
-        "type_name": name,
-        "fields": [
+def _describe(name: str, fields: tuple[Field, ...], source: str | None = None) -> _Description:
+    try:
+        described = [
             {"name": f.name, "type": _field_type(f.type)} for f in fields or (_EMPTY_PLACEHOLDER,)
-        ],
-    }
+        ]
+    except KeyError:
+        raise _no_type_id(name, fields, source) from None
+    return {"type_name": name, "fields": described}
+
+
+def _no_type_id(name: str, fields: tuple[Field, ...], source: str | None) -> LocatedError:
+    """The error for a field of ROS 1's ``time`` or ``duration``: rosidl's parser accepts them
+    for compatibility, but they have no type id and no ROS 2 tool generates code for them."""
+    field = next(f for f in fields if not f.type.is_message and f.type.base not in _TYPE_IDS)
+    ros2 = "builtin_interfaces/Time" if field.type.base == "time" else "builtin_interfaces/Duration"
+    return LocatedError.at(
+        field.location or SourceLocation(source or name),
+        f"'{field.type.base}' is a ROS 1 type; ROS 2 has no type hash or code for it",
+        hint=f"write {ros2} instead",
+    )
 
 
 def _json(value: Any) -> str:
@@ -141,10 +155,12 @@ class Ros2Identity:
                 continue
             node = local.get(name) or self.registry.message(name)
             fields = self._pseudo_fields(node)
-            referenced[name] = _describe(name, fields)
+            referenced[name] = _describe(name, fields, node.source)
             pending += [f.type.base for f in fields if f.type.is_message]
         return {
-            "type_description": _describe(interface.full_name, self._pseudo_fields(interface)),
+            "type_description": _describe(
+                interface.full_name, self._pseudo_fields(interface), interface.source
+            ),
             "referenced_type_descriptions": [referenced[n] for n in sorted(referenced)],
         }
 
@@ -162,7 +178,7 @@ class Ros2Identity:
             if name not in referenced:
                 referenced[name], uses = self._described_text(name, local)
                 pending += uses
-        own = _json(_describe(interface.full_name, fields))
+        own = _json(_describe(interface.full_name, fields, interface.source))
         others = ", ".join(referenced[n] for n in sorted(referenced))
         text = f'{{"type_description": {own}, "referenced_type_descriptions": [{others}]}}'
         return "RIHS01_" + hashlib.sha256(text.encode("utf-8")).hexdigest()
@@ -171,9 +187,10 @@ class Ros2Identity:
         """``name``'s description as JSON text, and the message types its fields name."""
         found = self._described.get(name) if name not in local else None
         if found is None:
-            fields = self._pseudo_fields(local.get(name) or self.registry.message(name))
+            node = local.get(name) or self.registry.message(name)
+            fields = self._pseudo_fields(node)
             found = (
-                _json(_describe(name, fields)),
+                _json(_describe(name, fields, node.source)),
                 [f.type.base for f in fields if f.type.is_message],
             )
             if name not in local:  # a local type is its owner's own: not shared
