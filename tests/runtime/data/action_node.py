@@ -6,7 +6,8 @@ one feedback (9.5 m) and runs until a cancel arrives, then ends PREEMPTED (docke
 battery -1); any other goal sends two feedbacks (2.5 m, 1.25 m) and ends SUCCEEDED (docked
 true, battery 87.5, text "docked at <dock_id>").
 Client (rospy's SimpleActionClient on CS_ACTION): goal "from-rospy" to its end, then goal
-"cancel-me", cancelled once its first feedback arrives.
+"cancel-me", cancelled once its first feedback has arrived and the server's status shows it
+active.
 Prints "ready" once the server runs and "done" once both sides are through (or the timeout
 passed); writes what both sides saw as JSON when its stdin closes (the C# side may still be
 reading the last result then).
@@ -81,11 +82,19 @@ def call(name, deadline, seen):
         return
     ids = {}
     for dock_id in ("from-rospy", "cancel-me"):
-        first = threading.Event()
-        client.send_goal(DockGoal(dock_id=dock_id), feedback_cb=lambda _, first=first: first.set())
+        first, active = threading.Event(), threading.Event()
+        client.send_goal(
+            DockGoal(dock_id=dock_id),
+            active_cb=active.set,
+            feedback_cb=lambda _, first=first: first.set(),
+        )
         ids[client.gh.comm_state_machine.action_goal.goal_id.id] = dock_id
         if dock_id == "cancel-me":
+            # Cancel once the server's status lists the goal, not at the first feedback alone:
+            # status and feedback come on separate connections, and a status published before
+            # the goal arrived, read after a cancel, makes actionlib's client mark the goal LOST.
             first.wait(max(deadline - time.monotonic(), 0.1))
+            active.wait(max(deadline - time.monotonic(), 0.1))
             client.cancel_goal()
         finished = client.wait_for_result(rospy.Duration(max(deadline - time.monotonic(), 0.1)))
         result = client.get_result()
