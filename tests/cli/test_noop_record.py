@@ -347,3 +347,85 @@ def test_any_path_the_record_holds_changed_in_any_way_makes_the_run_plan_again(
         undo()
         settle()
         assert scaffold(capsysbinary, *args) == expected  # plans again and records
+
+
+def test_a_folder_found_missing_by_os_access_is_seen_when_it_appears(
+    sample: Path,
+    capsysbinary: pytest.CaptureFixture[bytes],
+    planned: list[list[str]],
+    monkeypatch: pytest.MonkeyPatch,
+    tmp_path: Path,
+) -> None:
+    # a prefix's share folder is searched one level deep: each folder there is asked with
+    # os.access whether it has msg/, and nothing lists the folder itself
+    shadow = tmp_path / "prefix" / "share" / "sensor_msgs"
+    shadow.mkdir(parents=True)
+    monkeypatch.setenv("CMAKE_PREFIX_PATH", str(tmp_path / "prefix"))
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    args = ("apply", "--check", "--ros-env")
+    settle()
+    assert scaffold(capsysbinary, *args)[0] == 0
+    assert len(records(sample)) == 1
+    _create("msg/LaserScan.msg", "float32 range_min\n")(shadow)
+    after = scaffold(capsysbinary, *args)
+    assert b"does not match sensor_msgs/LaserScan as defined here" in after[1]
+    assert len(planned) == 2
+
+
+def test_a_record_made_by_another_copy_of_unityscaffold_is_not_replayed(
+    sample: Path, tmp_path: Path
+) -> None:
+    # the same command line, folder and environment, but the code imported from elsewhere
+    # (an editable install pointed at another checkout): that code's output, not the record's
+    other = tmp_path / "other"
+    shutil.copytree(
+        REPO / "unityscaffold", other / "unityscaffold", ignore=shutil.ignore_patterns("*.pyc")
+    )
+    report = other / "unityscaffold" / "apply" / "report.py"
+    report.write_text(
+        report.read_text(encoding="utf-8").replace("matches the manifest", "is in line"),
+        encoding="utf-8",
+    )
+    code = "import sys; sys.path.insert(0, sys.argv.pop()); from unityscaffold.cli import main; "
+    code += "sys.exit(main(['apply']))"
+
+    def scaffold_from(tree: Path) -> str:
+        return subprocess.run(
+            [sys.executable, "-c", code, str(tree)],
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+
+    settle()
+    assert "matches the manifest" in scaffold_from(REPO)
+    assert "is in line" in scaffold_from(other)
+
+
+def test_a_cache_folder_inside_a_searched_folder_is_left_out_without_a_traceback(
+    sample: Path,
+    capsysbinary: pytest.CaptureFixture[bytes],
+    planned: list[list[str]],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    cache = sample / "ros_ws" / "src" / "cache"  # the interface search walks ros_ws/src
+    (cache / "unityscaffold" / "noop").mkdir(parents=True)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
+    template_environment.cache_clear()
+    settle()
+    first = scaffold(capsysbinary, "apply")
+    assert first[0] == 0 and len(list((cache / "unityscaffold" / "noop").glob("*.rec"))) == 1
+    assert scaffold(capsysbinary, "apply") == first
+    assert len(planned) == 1
+
+
+def test_a_deleted_current_folder_means_the_usual_way(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    gone = tmp_path / "gone"
+    gone.mkdir()
+    monkeypatch.chdir(gone)
+    gone.rmdir()
+    assert _noop.replay(["apply"]) is None
+    assert _noop.Recorder.start(["apply"]) is None

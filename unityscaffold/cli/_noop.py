@@ -11,19 +11,19 @@ never needed: with it, without it, or with a corrupt or foreign one, output is t
 
 What the answer depended on is observed, not listed, so inputs added later are covered too:
 while the command runs, every file opened (Python's ``open`` audit event), every folder listed
-(``os.scandir``/``os.listdir`` events) and every ``os.stat``/``os.lstat`` probe (``exists``,
-``is_file``, ``is_dir``, ``resolve`` …, absent paths included) is recorded, and so is the
-source file of every loaded module outside the standard library (an edited or upgraded
-unityscaffold, jinja2, ruamel.yaml …). A
-folder's ``stat`` changes whenever an entry is added, removed or renamed in it, so a new
-stray file, a leftover temporary file or a new package under ``Library/PackageCache`` is seen.
+(``os.scandir``/``os.listdir`` events) and every ``os.stat``/``os.lstat``/``os.access``
+probe (``exists``, ``is_file``, ``is_dir``, ``resolve`` …, absent paths included) is
+recorded, and so is the source file of every loaded module outside the standard library (an
+edited or upgraded unityscaffold, jinja2, ruamel.yaml …). A folder's ``stat`` changes
+whenever an entry is added, removed or renamed in it, so a new stray file, a leftover
+temporary file or a new package under ``Library/PackageCache`` is seen.
 Compared per path: file type and mode, size, mtime and ctime in nanoseconds, inode and
 device. ctime cannot be set back by ``touch`` or ``os.utime``, so an edit hidden behind a
 restored mtime is still seen.
 
 The key of a record is everything else the output may depend on: the command line as given,
-the current folder, the whole environment, which streams are terminals, the interpreter and
-unityscaffold's version. A run is recorded only if:
+the current folder, the whole environment, which streams are terminals, the interpreter,
+unityscaffold's version and where it was imported from. A run is recorded only if:
 
 - the command said it verified a no-op (``verified``) and exited 0;
 - nothing outside the cache folder was written, removed or renamed, and no other process
@@ -86,6 +86,7 @@ _WATCHED = frozenset({"open", "os.scandir", "os.listdir", *_WRITE_EVENTS})
 
 _real_stat = os.stat
 _real_lstat = os.lstat
+_real_access = os.access
 _real_realpath = os.path.realpath
 _active: Recorder | None = None
 _hooked = False
@@ -111,6 +112,7 @@ def _key(argv: list[str]) -> str:
     identity = [
         _FORMAT,
         __version__,
+        __file__,  # the same version imported from another checkout is other code
         sys.executable,
         sys.version,
         sys.argv[0] if sys.argv else "",
@@ -156,8 +158,8 @@ def replay(argv: list[str]) -> int | None:
     root = cache_root()
     if root is None or _disabled() or _command(argv) not in _COMMANDS:
         return None
-    key = _key(argv)
     try:
+        key = _key(argv)  # os.getcwd() fails in a deleted folder
         with open(_record_path(root, key), "rb") as handle:
             # marshal: read with no module to import, and fast; its format is the
             # interpreter's, which the key names
@@ -298,12 +300,13 @@ class Recorder:
         os.stat = recorder.stat
         os.lstat = recorder.lstat
         os.path.realpath = recorder.realpath  # type: ignore[assignment]
+        os.access = recorder.access
         _active = recorder
         return recorder
 
     def _ours(self, path: str) -> bool:
         """Paths that are not inputs: the cache folder and Python's bytecode."""
-        if path == self.root or path.startswith(self.root + os.sep):
+        if _encloses(self.root, path):
             return True
         if self.pycache and path.startswith(self.pycache + os.sep):
             return True
@@ -340,6 +343,14 @@ class Recorder:
     def lstat(self, path: Any, *, dir_fd: Any = None) -> Any:
         return self.stat(path, dir_fd=dir_fd, follow_symlinks=False)
 
+    def access(self, path: Any, mode: int, **kwargs: Any) -> bool:
+        # a probe like stat (it raises no audit event): a child found missing by it counts
+        if kwargs.get("dir_fd") is not None:
+            self.tainted = True
+        else:
+            self._seen(path, _STAT if kwargs.get("follow_symlinks", True) else _LSTAT)
+        return _real_access(path, mode, **kwargs)
+
     def event(self, event: str, args: tuple[Any, ...]) -> None:
         if event == "open":
             target, mode, flags = args
@@ -360,13 +371,14 @@ class Recorder:
                 self.tainted = True
                 return
             path = os.fsdecode(os.fspath(target))
-            self._seen(path, _STAT)
-            self.folders.add(path)
+            if not self._ours(path):
+                self._seen(path, _STAT)
+                self.folders.add(path)
         elif event in _WRITE_EVENTS:
             first = args[0] if args else None
             named = os.fsdecode(first) if isinstance(first, (str, bytes, os.PathLike)) else None
             # the cache folder's own parents are made with it
-            making = event == "os.mkdir" and named is not None and self.root.startswith(named)
+            making = event == "os.mkdir" and named is not None and _encloses(named, self.root)
             if named is None or not (self._ours(named) or making):
                 self.tainted = True
 
@@ -376,6 +388,7 @@ class Recorder:
         os.stat = _real_stat
         os.lstat = _real_lstat
         os.path.realpath = _real_realpath
+        os.access = _real_access
         for wrapper in (sys.stdout, sys.stderr):
             try:
                 wrapper.flush()
@@ -445,6 +458,12 @@ class Recorder:
             _prune(folder)
         except OSError:
             _unlink(temp)
+
+
+def _encloses(folder: str, path: str) -> bool:
+    """Whether ``path`` is ``folder`` or inside it (as folders, not as text prefixes)."""
+    folder = folder.rstrip(os.sep) or os.sep
+    return path == folder or path.startswith(folder if folder == os.sep else folder + os.sep)
 
 
 def _prune(folder: str) -> None:
