@@ -429,3 +429,22 @@ def test_a_deleted_current_folder_means_the_usual_way(
     gone.rmdir()
     assert _noop.replay(["apply"]) is None
     assert _noop.Recorder.start(["apply"]) is None
+
+
+def test_a_temporary_file_of_a_running_writer_is_not_replayed_once_the_writer_is_gone(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], planned: list[list[str]]
+) -> None:
+    # whether a writer still runs is asked of the system, not of a file: its temporary file is
+    # left alone while it runs, and is a leftover to remove once it has gone
+    writer = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    try:
+        _create(GENERATED / f"Scripts/.ScanSubscriber.cs.{writer.pid}-0.tmp")(sample)
+        settle()
+        first = scaffold(capsysbinary, "apply", "--check")
+        assert first[0] == 0
+    finally:
+        writer.kill()
+        writer.wait()
+    after = scaffold(capsysbinary, "apply", "--check")
+    assert after[0] == 1 and b"remove  Assets/RosGenerated/Scripts/.ScanSub" in after[1]
+    assert len(planned) == 2

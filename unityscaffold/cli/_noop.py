@@ -79,8 +79,17 @@ _WRITE_EVENTS = frozenset(
     }
 )
 
-#: Events after which the answer may depend on more than files: not recorded.
-_ELSEWHERE = ("socket.", "subprocess.", "os.exec", "os.posix_spawn", "os.spawn", "os.system")
+#: Events after which the answer may depend on more than files: not recorded. ``os.kill``
+#: asks whether a writer still runs (its temporary file is a leftover only once it has gone).
+_ELSEWHERE = (
+    "socket.",
+    "subprocess.",
+    "os.exec",
+    "os.posix_spawn",
+    "os.spawn",
+    "os.system",
+    "os.kill",
+)
 
 _WATCHED = frozenset({"open", "os.scandir", "os.listdir", *_WRITE_EVENTS})
 
