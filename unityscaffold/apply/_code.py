@@ -20,6 +20,7 @@ from unityscaffold.codegen.scripts import (
     ActionClientScript,
     ActionServerScript,
     PublisherScript,
+    Script,
     ServiceClientScript,
     ServiceServerScript,
     SubscriberScript,
@@ -43,14 +44,6 @@ from unityscaffold.unity.project import ScriptInfo
 
 __all__ = ["CodePlan", "PlannedScript", "plan_code"]
 
-Script = (
-    PublisherScript
-    | SubscriberScript
-    | ServiceClientScript
-    | ServiceServerScript
-    | ActionClientScript
-    | ActionServerScript
-)
 Entry = Topic | Service | Action
 _LABEL: dict[type, str] = {Topic: "topic", Service: "service", Action: "action"}
 

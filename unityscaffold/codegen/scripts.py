@@ -24,6 +24,7 @@ __all__ = [
     "ActionServerScript",
     "PublisherScript",
     "RenderedScript",
+    "Script",
     "ServiceClientScript",
     "ServiceServerScript",
     "SubscriberScript",
