@@ -448,3 +448,23 @@ def test_a_temporary_file_of_a_running_writer_is_not_replayed_once_the_writer_is
     after = scaffold(capsysbinary, "apply", "--check")
     assert after[0] == 1 and b"remove  Assets/RosGenerated/Scripts/.ScanSub" in after[1]
     assert len(planned) == 2
+
+
+def test_a_module_added_to_a_folder_on_the_import_path_is_seen(
+    sample: Path, tmp_path: Path
+) -> None:
+    # a later import may find it before what the recorded run imported (pip install --user)
+    first_on_path = tmp_path / "site"
+    first_on_path.mkdir()
+    code = "import sys; sys.path.insert(0, sys.argv.pop()); sys.path.insert(1, sys.argv.pop()); "
+    code += "from unityscaffold.cli import main; sys.exit(main(['apply']))"
+    command = [sys.executable, "-c", code, str(REPO), str(first_on_path)]
+
+    def scaffold_process() -> subprocess.CompletedProcess[str]:
+        return subprocess.run(command, capture_output=True, text=True, check=False)
+
+    settle()
+    assert scaffold_process().returncode == 0
+    assert scaffold_process().returncode == 0
+    (first_on_path / "typer.py").write_text("raise SystemExit(7)\n", encoding="utf-8")
+    assert scaffold_process().returncode == 7

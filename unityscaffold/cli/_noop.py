@@ -13,10 +13,10 @@ What the answer depended on is observed, not listed, so inputs added later are c
 while the command runs, every file opened (Python's ``open`` audit event), every folder listed
 (``os.scandir``/``os.listdir`` events) and every ``os.stat``/``os.lstat``/``os.access``
 probe (``exists``, ``is_file``, ``is_dir``, ``resolve`` …, absent paths included) is
-recorded, and so is the source file of every loaded module outside the standard library (an
-edited or upgraded unityscaffold, jinja2, ruamel.yaml …). A folder's ``stat`` changes
-whenever an entry is added, removed or renamed in it, so a new stray file, a leftover
-temporary file or a new package under ``Library/PackageCache`` is seen.
+recorded, and so are the source file of every loaded module outside the standard library (an
+edited or upgraded unityscaffold, jinja2, ruamel.yaml …) and the folders on ``sys.path``.
+A folder's ``stat`` changes whenever an entry is added, removed or renamed in it, so a new
+stray file, a leftover temporary file or a new package under ``Library/PackageCache`` is seen.
 Compared per path: file type and mode, size, mtime and ctime in nanoseconds, inode and
 device. ctime cannot be set back by ``touch`` or ``os.utime``, so an edit hidden behind a
 restored mtime is still seen.
@@ -433,6 +433,11 @@ class Recorder:
                 continue
             if (source, _STAT) not in paths:
                 paths[(source, _STAT)] = _probe(source, _STAT)
+        # The folders imports search: a module added to one may be found before the one this
+        # run imported. The import system lists them through its own stat, which is not seen.
+        for folder in sys.path:
+            if isinstance(folder, str) and (folder or ".", _STAT) not in paths:
+                paths[(folder or ".", _STAT)] = _probe(folder or ".", _STAT)
         # A symlink in a listed folder: os.walk asked whether its target is a folder.
         for folder in sorted(self.folders):
             if len(paths[(folder, _STAT)]) == 1:
