@@ -468,3 +468,26 @@ def test_a_module_added_to_a_folder_on_the_import_path_is_seen(
     assert scaffold_process().returncode == 0
     (first_on_path / "typer.py").write_text("raise SystemExit(7)\n", encoding="utf-8")
     assert scaffold_process().returncode == 7
+
+
+def test_a_file_with_whole_second_times_is_trusted_only_seconds_later(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the manifest on a file system that keeps whole seconds (FAT, some shares), the rest not:
+    # an edit later in the same second would leave its times as they are
+    manifest = str(sample / "robot.yaml")
+    real = _noop._probe
+
+    def whole_seconds(path: str, how: int) -> tuple[int, ...]:
+        facts = real(path, how)
+        if os.path.abspath(path) != manifest or len(facts) != 6:
+            return facts
+        mode, size, mtime, ctime, inode, device = facts
+        second = 1_000_000_000
+        return (mode, size, mtime - mtime % second, ctime - ctime % second, inode, device)
+
+    monkeypatch.setattr(_noop, "_probe", whole_seconds)
+    _append("robot.yaml", "# edited\n")(sample)
+    settle()
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 0
+    assert records(sample) == []

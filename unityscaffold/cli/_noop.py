@@ -446,17 +446,15 @@ class Recorder:
                 for entry in entries:
                     if entry.is_symlink() and (entry.path, _STAT) not in paths:
                         paths[(entry.path, _STAT)] = _probe(entry.path, _STAT)
-        newest = 0
-        coarse = True
+        # Timestamps of a file changed after the run started are at most one clock tick
+        # (~10 ms; 2 s where the file system keeps whole seconds) older than the change. Judged
+        # per path: a project on such a file system may sit beside code on a finer one.
         for facts in paths.values():
             if len(facts) == 6:
-                newest = max(newest, facts[2], facts[3])
-                coarse = coarse and facts[3] % 1_000_000_000 == 0
-        # Timestamps of a file changed after the run started are at most one clock tick
-        # (~10 ms; 2 s where the file system keeps whole seconds) older than the change.
-        margin = 2_050_000_000 if coarse else 50_000_000
-        if newest >= self.start_ns - margin:
-            return None
+                coarse = facts[2] % 1_000_000_000 == 0 and facts[3] % 1_000_000_000 == 0
+                margin = 2_050_000_000 if coarse else 50_000_000
+                if max(facts[2], facts[3]) >= self.start_ns - margin:
+                    return None
         return [(path, how, facts) for (path, how), facts in sorted(paths.items())]
 
     def _write(self, paths: list[tuple[str, int, tuple[int, ...]]], status: int) -> None:
