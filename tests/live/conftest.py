@@ -19,6 +19,7 @@ from helpers import SYSTEM_PYTHON, require
 from processes import free_port, start, stop, wait_for
 
 from tests.live.helpers_live import Ros1System
+from unityscaffold.interfaces.live._actions import ACTION_TOPICS
 
 DATA = Path(__file__).parent / "data"
 TEST_PACKAGE = DATA / "scaffold_test_msgs"
@@ -70,12 +71,12 @@ def ros1_system(
     require(Path("/usr/bin/rosmaster").exists(), "Debian's python3-rosmaster")
     require(
         subprocess.run(
-            [str(SYSTEM_PYTHON), "-c", "import rospy, genpy.dynamic"],
+            [str(SYSTEM_PYTHON), "-c", "import rospy, genpy.dynamic, actionlib"],
             capture_output=True,
             timeout=30,
         ).returncode
         == 0,
-        "Debian's python3-rospy and python3-genpy",
+        "Debian's python3-rospy, python3-genpy and python3-actionlib",
     )
     home = tmp_path_factory.mktemp("ros_home")
     port = free_port()
@@ -129,7 +130,8 @@ def ros1_system(
 def _node_ready(master: xmlrpc.client.ServerProxy) -> bool:
     publishers, subscribers, services = master.getSystemState("/test")[2]
     topics = {name for name, _ in publishers} | {name for name, _ in subscribers}
-    return {"/reading", "/imu", "/chatter", "/cmd_vel"} <= topics and {
+    actions = {f"/{a}/{t}" for a in ("two_ints", "served_by_unity") for t in ACTION_TOPICS}
+    return {"/reading", "/imu", "/chatter", "/cmd_vel", *actions} <= topics and {
         "/trigger",
         "/calibrate",
     } <= {name for name, _ in services}

@@ -62,8 +62,15 @@ def test_discover_fills_manifest_and_cache_from_a_live_master(
         "gameobject: RosConnector}",
         "- {name: /trigger, type: std_srvs/Trigger, role: client, gameobject: RosConnector}",
         "interfaces:\n  - ros_definitions\n",
+        # actionlib's five topics under a name are one action, with Unity's role in it.
+        "actions:\n  - {name: /served_by_unity, type: actionlib/action/Test, role: server, "
+        "gameobject: RosConnector}\n  - {name: /two_ints, type: actionlib/action/TwoInts, "
+        "role: client, gameobject: RosConnector}\n",
     ):
         assert line in text
+    assert "/two_ints/" not in text and "/served_by_unity/" not in text
+    assert "found 4 topics, 2 services and 2 actions" in run.out
+    assert "added 3 topics, 2 services and 2 actions" in run.out
     # The custom .srv cannot come over the wire; the user is told, and nothing fails.
     assert "warning: no definition of scaffold_test_msgs/Calibrate" in run.err
     cached_types_resolve_alone_with_genmsg_md5(project / "ros_definitions", ros1_system)
@@ -97,7 +104,7 @@ def test_discovering_twice_changes_nothing(
     before = snapshot(project)
     again = run_cli(capsys, *args)
     assert again.code == 0
-    assert "added 0 topics and 0 services" in again.out
+    assert "added 0 topics, 0 services and 0 actions" in again.out
     assert snapshot(project) == before
 
 

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
+from pathlib import Path
 
 import pytest
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.interfaces.live import Direction, DiscoveredService, DiscoveredTopic, Discovery
+from unityscaffold.interfaces.live._actions import group_actions
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.manifest import load_manifest, starter_manifest
 from unityscaffold.manifest.edit import edit_manifest, manifest_fragment
@@ -181,3 +184,53 @@ def test_an_entry_goes_inside_a_list_followed_by_blank_lines_or_comments(
         "gameobject: RosConnector}\n" + gap + "services:\n" in edit.text
         or "(Unity receives)\n" + gap + "services:\n" in edit.text
     )
+
+
+def _action_topics(name: str, package: str, short: str) -> list[DiscoveredTopic]:
+    types = {
+        "goal": f"{package}/{short}ActionGoal",
+        "cancel": "actionlib_msgs/GoalID",
+        "status": "actionlib_msgs/GoalStatusArray",
+        "feedback": f"{package}/{short}ActionFeedback",
+        "result": f"{package}/{short}ActionResult",
+    }
+    return [DiscoveredTopic(f"{name}/{part}", kind) for part, kind in types.items()]
+
+
+def test_actionlib_topic_sets_become_actions_and_partial_sets_stay_topics(tmp_path: Path) -> None:
+    recorded = Discovery(
+        Dialect.ROS1,
+        "run.bag",
+        (
+            # A complete set whose roles nobody shows (a bag): client, with a TODO.
+            *_action_topics("/move_base", "move_base_msgs", "MoveBase"),
+            # One topic short, and one with another action's type: plain topics.
+            *_action_topics("/dock", "diffbot_msgs", "Dock")[:4],
+            *_action_topics("/mixed", "diffbot_msgs", "Dock")[:4],
+            DiscoveredTopic("/mixed/result", "move_base_msgs/MoveBaseActionResult"),
+        ),
+    )
+    found = group_actions(recorded)
+    assert [(a.name, a.type, a.role) for a in found.actions] == [
+        ("/move_base", "move_base_msgs/action/MoveBase", None)
+    ]
+    assert [t.name for t in found.topics] == sorted(
+        t.name for t in recorded.topics if not t.name.startswith("/move_base/")
+    )
+    edited = edit_manifest(EXAMPLE, found, cache_entry="ros_definitions")
+    assert edited.added_actions == ("/move_base",)
+    assert (
+        "actions:\n  - {name: /move_base, type: move_base_msgs/action/MoveBase, role: client, "
+        "gameobject: RosConnector}  # TODO: role: client (Unity sends goals) or server (Unity "
+        "carries them out)\n"
+    ) in edited.text
+    # What discover writes into init's starter loads as a manifest with that action.
+    starter = starter_manifest(1, "Assets/Scenes/Main.unity")
+    path = tmp_path / "robot.yaml"
+    only_action = dataclasses.replace(found, topics=())  # topics without direction get a TODO
+    path.write_text(edit_manifest(starter, only_action, cache_entry="d").text, encoding="utf-8")
+    assert [(a.name, a.role.value) for a in load_manifest(path).actions] == [
+        ("/move_base", "client")
+    ]
+    ros2 = dataclasses.replace(recorded, dialect=Dialect.ROS2)
+    assert group_actions(ros2) == ros2  # ROS 2 actions are not topics of this shape

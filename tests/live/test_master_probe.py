@@ -103,12 +103,63 @@ def test_reconstructed_definitions_have_genmsg_md5sums(
 def test_a_custom_service_is_checked_against_a_local_srv(
     ros1_system: Ros1System, tmp_path: Path
 ) -> None:
-    found = discover(master_url=ros1_system.url, timeout=FAST, names=NameFilter.of(exclude="ghost"))
+    names = NameFilter.of(exclude="ghost|two_ints|served_by_unity")  # actions: see below
+    found = discover(master_url=ros1_system.url, timeout=FAST, names=names)
     staged = stage_definitions(
         found, tmp_path / "cache", search_paths=[Path(__file__).parent / "data"]
     )
     staged.discard()
     assert staged.warnings == []
+
+
+def test_actionlib_topic_sets_are_found_as_actions_with_unitys_role(
+    ros1_system: Ros1System, tmp_path: Path
+) -> None:
+    found = discover(master_url=ros1_system.url, timeout=FAST, names=NameFilter.of(select="_"))
+    actions = {a.name: (a.type, a.role) for a in found.actions}
+    assert actions == {
+        "/two_ints": ("actionlib/action/TwoInts", "client"),  # the node serves it
+        "/served_by_unity": ("actionlib/action/Test", "server"),  # the node only sends goals
+    }
+    assert not [t.name for t in found.topics if t.name.startswith(tuple(actions))]
+    two_ints = next(a for a in found.actions if a.name == "/two_ints")
+    assert [t.name for t in two_ints.topics] == [
+        f"/two_ints/{part}" for part in ("goal", "cancel", "status", "feedback", "result")
+    ]
+    # A master gives only what the node publishes: the node's server sends no goal text, its
+    # client no result or feedback text, so neither action can be rebuilt from the wire ...
+    staged = stage_definitions(found, tmp_path / "cache")
+    staged.discard()
+    assert sorted(w.split(" (")[0] for w in staged.warnings) == [
+        "no definition of actionlib/action/Test",
+        "no definition of actionlib/action/TwoInts",
+    ]
+    assert all("rosbridge" in w for w in staged.warnings)
+    # ... and a local copy of actionlib's .action files is checked against the md5sums the
+    # node reported for the topics it publishes (result, feedback, status; goal, cancel).
+    local = Path(__file__).parent / "data" / "actionlib_ws"
+    staged = stage_definitions(found, tmp_path / "cache", search_paths=[local])
+    staged.discard()
+    assert staged.warnings == []
+    reported = {t.name for a in found.actions for t in a.topics if t.md5}
+    assert reported == {
+        "/two_ints/status",
+        "/two_ints/feedback",
+        "/two_ints/result",
+        "/served_by_unity/goal",
+        "/served_by_unity/cancel",
+    }
+
+
+def test_a_wrong_local_action_is_an_md5_mismatch(ros1_system: Ros1System, tmp_path: Path) -> None:
+    local = tmp_path / "ws" / "actionlib"
+    (local / "action").mkdir(parents=True)
+    (local / "action" / "TwoInts.action").write_text("int64 a\nint64 b\n---\nint32 sum\n---\n")
+    found = discover(
+        master_url=ros1_system.url, timeout=FAST, names=NameFilter.of(select="two_ints")
+    )
+    with pytest.raises(UserError, match="md5sum mismatch for actionlib/TwoIntsActionResult"):
+        stage_definitions(found, tmp_path / "cache", search_paths=[local.parent])
 
 
 def test_unreachable_master_is_a_clear_error() -> None:

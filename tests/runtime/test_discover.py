@@ -22,7 +22,9 @@ from unityscaffold.interfaces.live.definitions import stage_definitions
 from unityscaffold.interfaces.model import Dialect, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 
-OURS = "^/(chatter|odom|base_status|dock/feedback|cmd_vel|trigger|set_speed_limit)$"
+OURS = "^/(chatter|odom|base_status|undock/feedback|cmd_vel|trigger|set_speed_limit)$"
+ACTIONS = "^/(charger/)?dock/"
+ACTION_TOPICS = ("goal", "cancel", "status", "feedback", "result")
 
 
 @pytest.fixture(scope="module")
@@ -53,7 +55,7 @@ def test_topics_types_directions_definitions_and_services(
         "/chatter": ("std_msgs/String", Direction.SUBSCRIBE),
         "/odom": ("nav_msgs/Odometry", Direction.SUBSCRIBE),
         "/base_status": ("diffbot_msgs/BaseStatus", Direction.SUBSCRIBE),
-        "/dock/feedback": ("diffbot_msgs/DockActionFeedback", Direction.SUBSCRIBE),
+        "/undock/feedback": ("diffbot_msgs/DockActionFeedback", Direction.SUBSCRIBE),
         "/cmd_vel": ("geometry_msgs/Twist", Direction.PUBLISH),
     }
     # rosapi's full texts are genpy's, byte for byte.
@@ -68,6 +70,40 @@ def test_topics_types_directions_definitions_and_services(
     assert set(topics) <= {t.name for t in everything.topics}
     assert not [s.name for s in everything.services if s.name.startswith("/rosapi")]
     assert ("/base_status", "diffbot_msgs/BaseStatus") in list_live_types(bridge.url, timeout=5)
+
+
+def test_actionlib_topics_are_actions_rebuilt_with_genpy_md5sums(
+    bridge: Bridge, truth: dict[str, Any], tmp_path: Path
+) -> None:
+    found = discover(rosbridge_url=bridge.url, timeout=5, names=NameFilter.of(select=ACTIONS))
+    assert found.warnings == () and found.topics == ()
+    # The node serves /dock (Unity is its client) and only sends goals on /charger/dock.
+    assert [(a.name, a.type, a.role) for a in found.actions] == [
+        ("/charger/dock", "diffbot_msgs/action/Dock", "server"),
+        ("/dock", "diffbot_msgs/action/Dock", "client"),
+    ]
+    for action in found.actions:
+        assert [t.name for t in action.topics] == [f"{action.name}/{t}" for t in ACTION_TOPICS]
+        for topic in action.topics:  # rosapi sends every text, published or only subscribed
+            assert topic.definition == truth[topic.type]["definition"], topic.name
+    staged = stage_definitions(found, tmp_path / "cache")
+    assert staged.warnings == []
+    staged.commit()
+    # The .action file comes back from the goal, result and feedback texts: its messages have
+    # genpy's md5sums and full texts, from the cache alone.
+    alone = Registry.load(
+        Dialect.ROS1, [tmp_path / "cache"], use_environment=False, use_builtin=False
+    )
+    sample = Path(__file__).resolve().parents[2] / "sample_project" / "ros_ws" / "src"
+    rebuilt = tmp_path / "cache" / "diffbot_msgs" / "action" / "Dock.action"
+    original = sample / "diffbot_msgs" / "action" / "Dock.action"
+    assert rebuilt.read_text() == original.read_text()
+    identity = Ros1Identity(alone)
+    for kind in ("DockActionGoal", "DockActionFeedback", "DockActionResult"):
+        spec = alone.message(f"diffbot_msgs/{kind}")
+        assert identity.md5sum(spec) == truth[f"diffbot_msgs/{kind}"]["md5sum"], kind
+        assert identity.full_text(spec) == truth[f"diffbot_msgs/{kind}"]["definition"], kind
+    assert not (tmp_path / "cache" / "diffbot_msgs" / "msg" / "DockActionGoal.msg").exists()
 
 
 def test_staged_definitions_reproduce_genpy_md5sums(
@@ -107,20 +143,24 @@ def test_discover_then_apply_without_the_workspace(
         "--timeout",
         "5",
         "--select",
-        OURS,
+        f"{OURS}|{ACTIONS}",
         "--exclude",
         "set_speed_limit",  # its .srv text never crosses ROS 1, and no workspace is given
         "--progress",
     )
     assert found.code == 0, found.err
-    assert "probing 6/6" in found.err
+    assert "probing 16/16" in found.err  # 5 topics, 1 service, 2 actions of 5 topics
     text = manifest.read_text()
     assert "- {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish" in text
     assert "- {name: /base_status, type: diffbot_msgs/BaseStatus, direction: subscribe" in text
+    assert "- {name: /dock, type: diffbot_msgs/action/Dock, role: client" in text
+    assert "- {name: /charger/dock, type: diffbot_msgs/action/Dock, role: server" in text
     applied = run_cli("apply", str(manifest), "--json")
     assert applied.code == 0, applied.err
     files = {entry["path"] for entry in json.loads(applied.out)["files"]}
     assert "Assets/RosGenerated/Messages/Diffbot/msg/BaseStatus.cs" in files
     assert "Assets/RosGenerated/Scripts/BaseStatusSubscriber.cs" in files
     assert "Assets/RosGenerated/Scripts/TriggerClient.cs" in files
+    assert "Assets/RosGenerated/Scripts/DockActionClient.cs" in files
+    assert "Assets/RosGenerated/Scripts/ChargerDockActionServer.cs" in files
     compile_applied_project(mcs, manifest, tmp_path / "build", ros2=False)

@@ -19,12 +19,13 @@ from unityscaffold.interfaces.model import Dialect
 from unityscaffold.manifest import edit
 
 _HELP = (
-    "Read topics, services and their definitions from a running ROS system or a bag.\n\n"
-    "The definitions are written as .msg files to a cache folder next to the manifest (ROS 1 "
-    "md5sums checked against the system's), and the topics and services are added to the "
-    "manifest, keeping its comments and layout. With --print, a manifest fragment is printed "
-    "instead. Without MANIFEST, robot.yaml in this folder or the nearest folder above it (up to "
-    "the repository's root) is used.\n\n"
+    "Read topics, services, actions and their definitions from a running ROS system or a "
+    "bag.\n\n"
+    "The definitions are written as .msg (and .action) files to a cache folder next to the "
+    "manifest (ROS 1 md5sums checked against the system's), and the topics, services and "
+    "(ROS 1) actions are added to the manifest, keeping its comments and layout. With --print, "
+    "a manifest fragment is printed instead. Without MANIFEST, robot.yaml in this folder or the "
+    "nearest folder above it (up to the repository's root) is used.\n\n"
     "Examples:\n\n"
     "  scaffold discover --master http://robot:11311\n\n"
     "  scaffold discover my_robot/robot.yaml --rosbridge ws://robot:9090\n\n"
@@ -184,6 +185,7 @@ def _report(
             "cache_files_changed": [p.as_posix() for p in staged.changed],
             "added_topics": list(changes.added_topics),
             "added_services": list(changes.added_services),
+            "added_actions": list(changes.added_actions),
             "already_listed": list(changes.already_listed),
             "written": not dry_run,
         }
@@ -195,14 +197,22 @@ def _report(
         typer.echo(changes.text, nl=False)
         return
     verb = "would add" if dry_run else "added"
-    typer.echo(
-        f"found {len(found.topics)} topics and {len(found.services)} services in "
-        f"{found.origin}; {verb} {len(changes.added_topics)} topics and "
-        f"{len(changes.added_services)} services to {manifest}"
+    actions = bool(found.actions)
+    found_counts = _counts(len(found.topics), len(found.services), len(found.actions), actions)
+    added = _counts(
+        len(changes.added_topics), len(changes.added_services), len(changes.added_actions), actions
     )
+    typer.echo(f"found {found_counts} in {found.origin}; {verb} {added} to {manifest}")
     if changes.already_listed:
         typer.echo(f"already listed: {', '.join(changes.already_listed)}")
     typer.echo(
         f"{len(staged.changed)} definition files {'would change' if dry_run else 'written'}"
         f" in {staged.target}"
     )
+
+
+def _counts(topics: int, services: int, actions: int, with_actions: bool) -> str:
+    """``3 topics and 2 services``, or ``3 topics, 2 services and 1 actions``."""
+    if not with_actions:
+        return f"{topics} topics and {services} services"
+    return f"{topics} topics, {services} services and {actions} actions"

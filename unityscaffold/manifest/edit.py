@@ -1,13 +1,14 @@
-"""Add discovered topics and services to a manifest, in place, keeping its comments and layout.
+"""Add discovered topics, services and actions to a manifest, in place, keeping its layout.
 
 ruamel.yaml's round-trip mode re-emits untouched nodes as they were written; what it cannot
 keep by itself is the indentation style, so that is read from the text first. New entries copy
 the style of the entries already listed (flow ``{…}`` maps by default, as ``scaffold init``
-writes them). A topic or service already listed, under any type, is never added twice.
+writes them). A topic, service or action already listed, under any type, is never added twice.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import io
 import itertools
 import os
@@ -25,6 +26,7 @@ from ruamel.yaml.tokens import CommentToken
 from unityscaffold.errors import LocatedError, SourceLocation, UserError
 from unityscaffold.interfaces.live.model import (
     Direction,
+    DiscoveredAction,
     DiscoveredService,
     DiscoveredTopic,
     Discovery,
@@ -41,6 +43,7 @@ __all__ = [
 
 DEFAULT_GAMEOBJECT = "RosConnector"
 _TODO = "TODO: direction: publish (Unity sends) or subscribe (Unity receives)"
+_ROLE_TODO = "TODO: role: client (Unity sends goals) or server (Unity carries them out)"
 _HEADER_KEYS = ("version", "ros", "project", "output", "scene", "namespace")
 _SEQUENCE_ITEM = re.compile(r"^( *)-( +)")
 _KEY_ONLY = re.compile(r"^( *)(- )?[^\s#][^:#]*:\s*(#.*)?$")
@@ -55,10 +58,13 @@ class ManifestEdit:
     added_services: tuple[str, ...] = ()
     already_listed: tuple[str, ...] = ()
     added_interface: str | None = None
+    added_actions: tuple[str, ...] = ()
 
     @property
     def changed(self) -> bool:
-        return bool(self.added_topics or self.added_services or self.added_interface)
+        return bool(
+            self.added_topics or self.added_services or self.added_actions or self.added_interface
+        )
 
 
 def _yaml(text: str) -> YAML:
@@ -192,11 +198,7 @@ def _add_topics(
         entry = _entry(_topic_pairs(topic), seq)
         _append(seq, entry)
         if topic.direction is Direction.UNKNOWN:
-            # A flow map takes the comment at the end of its line; a block map on its first key.
-            if entry.fa.flow_style():
-                seq.yaml_add_eol_comment(_TODO, len(seq) - 1)
-            else:
-                entry.yaml_add_eol_comment(_TODO, "name")
+            _add_todo(seq, entry, _TODO)
         added.append(topic.name)
     return added, skipped
 
@@ -213,6 +215,38 @@ def _add_services(
         _append(seq, _entry(_service_pairs(service), seq))
         added.append(service.name)
     return added, skipped
+
+
+def _add_actions(
+    seq: CommentedSeq, actions: Iterable[DiscoveredAction]
+) -> tuple[list[str], list[str]]:
+    """Actions with the role the graph shows; ``client`` with a TODO when it shows none."""
+    listed = _listed_names(seq)
+    added, skipped = [], []
+    for action in actions:
+        if action.name in listed:
+            skipped.append(action.name)
+            continue
+        pairs = [
+            ("name", action.name),
+            ("type", action.type),
+            ("role", action.role or "client"),
+            ("gameobject", DEFAULT_GAMEOBJECT),
+        ]
+        entry = _entry(pairs, seq)
+        _append(seq, entry)
+        if action.role is None:
+            _add_todo(seq, entry, _ROLE_TODO)
+        added.append(action.name)
+    return added, skipped
+
+
+def _add_todo(seq: CommentedSeq, entry: CommentedMap, todo: str) -> None:
+    """A flow map takes the comment at the end of its line; a block map on its first key."""
+    if entry.fa.flow_style():
+        seq.yaml_add_eol_comment(todo, len(seq) - 1)
+    else:
+        entry.yaml_add_eol_comment(todo, "name")
 
 
 def _append(seq: CommentedSeq, value: Any) -> None:
@@ -251,7 +285,7 @@ def _add_interface(document: CommentedMap, cache_entry: str, path: str) -> str |
 def edit_manifest(
     text: str, discovery: Discovery, *, cache_entry: str, path: str = "robot.yaml"
 ) -> ManifestEdit:
-    """``text`` with the discovered topics and services and the cache folder added."""
+    """``text`` with the discovered topics, services and actions and the cache folder added."""
     yaml, document = _load(text, path)
     _check_dialect(document, discovery, path)
     added_interface = _add_interface(document, cache_entry, path)
@@ -268,28 +302,29 @@ def edit_manifest(
         if discovery.services
         else ([], [])
     )
+    actions, skipped_actions = (
+        _add_actions(_list(document, "actions", path), discovery.actions)
+        if discovery.actions
+        else ([], [])
+    )
     result = ManifestEdit(
         text,
         tuple(topics),
         tuple(services),
-        tuple(skipped_topics + skipped_services),
+        tuple(skipped_topics + skipped_services + skipped_actions),
         added_interface,
+        tuple(actions),
     )
     if not result.changed:
         return result
     out = io.StringIO()
     yaml.dump(document, out)
-    return ManifestEdit(
-        out.getvalue(),
-        result.added_topics,
-        result.added_services,
-        result.already_listed,
-        added_interface,
-    )
+    return dataclasses.replace(result, text=out.getvalue())
 
 
 def manifest_fragment(discovery: Discovery, *, cache_entry: str) -> str:
-    """The ``interfaces``, ``topics`` and ``services`` entries to paste into a manifest."""
+    """The ``interfaces``, ``topics``, ``services`` and ``actions`` entries to paste into a
+    manifest."""
     fragment = f"# discovered from {discovery.origin}\nros: {int(discovery.dialect)}\n"
     edit = edit_manifest(fragment, discovery, cache_entry=cache_entry, path="<fragment>")
     return edit.text

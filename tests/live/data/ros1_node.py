@@ -3,12 +3,16 @@
 Its message classes are built at run time with genpy.dynamic from genmsg's full texts (given as
 the JSON file genmsg_dump.py writes), so custom types need no generated Python package.
 Publishes /chatter, /imu and /reading, subscribes to /cmd_vel, serves /trigger and /calibrate.
+With actionlib (Debian's python3-actionlib and its own actionlib/TwoInts and actionlib/Test
+actions): serves the action /two_ints and is a client, without a server, of /served_by_unity.
 Usage: ros1_node.py DEFINITIONS.json
 """
 
 import json
 import sys
 
+import actionlib
+import actionlib.msg
 import genpy.dynamic
 import rospy
 
@@ -59,6 +63,14 @@ def main(path):
     rospy.Service(
         "/calibrate", calibrate, lambda request: calibrate._response_class(True, "calibrated")
     )
+    two_ints = actionlib.SimpleActionServer(
+        "/two_ints",
+        actionlib.msg.TwoIntsAction,
+        lambda goal: two_ints.set_succeeded(actionlib.msg.TwoIntsResult(sum=goal.a + goal.b)),
+        auto_start=False,
+    )
+    two_ints.start()
+    actionlib.SimpleActionClient("/served_by_unity", actionlib.msg.TestAction)
     messages = [string(data="hello"), imu(), reading()]
     print("ready", flush=True)
     while not rospy.is_shutdown():

@@ -11,8 +11,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from unityscaffold.errors import UserError
+from unityscaffold.interfaces.live._actions import group_actions
 from unityscaffold.interfaces.live.model import (
     Direction,
+    DiscoveredAction,
     DiscoveredService,
     DiscoveredTopic,
     Discovery,
@@ -23,6 +25,7 @@ from unityscaffold.interfaces.model import Dialect
 
 __all__ = [
     "Direction",
+    "DiscoveredAction",
     "DiscoveredService",
     "DiscoveredTopic",
     "Discovery",
@@ -58,7 +61,10 @@ def discover(
     dialect: Dialect | None = None,
     progress: Progress | None = None,
 ) -> Discovery:
-    """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``."""
+    """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``.
+
+    In ROS 1, each complete set of actionlib topics comes back as one action, not as topics.
+    """
     from unityscaffold.interfaces.live import _master, _rosbridge
 
     chosen = [s for s in (master_url, rosbridge_url, bag) if s is not None]
@@ -66,13 +72,15 @@ def discover(
         raise UserError("give exactly one of --master, --rosbridge and --bag")
     names = names or NameFilter()
     if master_url is not None:
-        return _master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
-    if rosbridge_url is not None:
-        return _rosbridge.discover_rosbridge(
+        found = _master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
+    elif rosbridge_url is not None:
+        found = _rosbridge.discover_rosbridge(
             rosbridge_url, timeout=timeout, names=names, dialect=dialect, progress=progress
         )
-    assert bag is not None
-    return _discover_bag(Path(bag), names)
+    else:
+        assert bag is not None
+        found = _discover_bag(Path(bag), names)
+    return group_actions(found)
 
 
 def _discover_bag(bag: Path, names: NameFilter) -> Discovery:

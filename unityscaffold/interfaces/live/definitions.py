@@ -6,6 +6,10 @@ splitting at those separators gives each file back byte for byte. The files are 
 ``<cache>/<pkg>/msg/<Type>.msg`` in a staging folder next to the cache; each ROS 1 type whose
 md5sum the system reported is checked against the md5sum of its reconstruction, and only when
 everything checks out does the staging folder replace the cache.
+
+A ROS 1 action's topics carry genaction's messages (``XActionGoal``, ``XGoal``, …), not the
+``.action`` file; its goal, result and feedback texts (without genaction's banner) joined by
+``---`` lines are that file again, written to ``<cache>/<pkg>/action/<X>.action``.
 """
 
 from __future__ import annotations
@@ -19,9 +23,19 @@ from pathlib import Path
 
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
-from unityscaffold.interfaces.live.model import DiscoveredService, DiscoveredTopic, Discovery
-from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
+from unityscaffold.interfaces.live.model import (
+    DiscoveredAction,
+    DiscoveredService,
+    DiscoveredTopic,
+    Discovery,
+)
+from unityscaffold.interfaces.model import ActionSpec, Dialect, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
+from unityscaffold.interfaces.ros1 import ACTION_BANNER
+from unityscaffold.interfaces.suffixes import (
+    ROS1_ACTION_PARTS,
+    ROS1_ACTION_WRAPPERS,
+)
 
 __all__ = ["Definition", "StagedCache", "split_full_text", "stage_definitions"]
 
@@ -110,7 +124,40 @@ def collect(discovery: Discovery) -> list[Definition]:
             package, name = _split_name(service.type.replace("/srv/", "/"), service.type)
             definition = Definition(package, name, service.definition, "srv")
             found.setdefault(definition.relative_path, definition)
+    for action in discovery.actions:
+        for definition in _action_definitions(action):
+            found.setdefault(definition.relative_path, definition)
     return [found[path] for path in sorted(found)]
+
+
+def _action_definitions(action: DiscoveredAction) -> list[Definition]:
+    """The ``.action`` file (when the goal, result and feedback texts all came) and the
+    messages the action uses; genaction's own messages are left out, the file makes them."""
+    package, _, name = action.type.partition("/action/")
+    own = {name + part for part in (*ROS1_ACTION_PARTS, *ROS1_ACTION_WRAPPERS)}
+    parts: dict[str, str] = {}
+    used = []
+    for topic in action.topics:
+        if not topic.definition:
+            continue
+        for definition in split_full_text(topic.type, topic.definition):
+            if definition.package != package or definition.name not in own:
+                used.append(definition)
+            elif definition.name in (name + part for part in ROS1_ACTION_PARTS):
+                parts[definition.name] = _part_text(definition.text)
+    if len(parts) == len(ROS1_ACTION_PARTS):
+        goal, result, feedback = (parts[name + part] for part in ROS1_ACTION_PARTS)
+        # genaction ends every line of a section with a newline, the file's last line too
+        # (which gives the feedback one more when the file ends with a newline): undo that.
+        text = f"{goal}---\n{result}---\n{feedback.removesuffix(chr(10))}"
+        used.append(Definition(package, name, text, "action"))
+    return used
+
+
+def _part_text(text: str) -> str:
+    """A goal, result or feedback section's lines, each ended by a newline as genaction does."""
+    text = text.removeprefix(ACTION_BANNER)
+    return text if text.endswith("\n") else text + "\n"
 
 
 def _write(staging: Path, definitions: Sequence[Definition], cache: Path) -> list[Path]:
@@ -173,7 +220,42 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
             _check_md5(
                 registry, spec, item.md5, item.name, discovery.origin, reconstructed=reconstructed
             )
+    for action in discovery.actions:
+        warnings.extend(_verify_action(action, discovery.origin, own, wider))
     return warnings
+
+
+def _verify_action(
+    action: DiscoveredAction, origin: str, own: Registry, wider: Registry
+) -> list[str]:
+    """The action's file from the cache when its texts came, else from the user's folders;
+    each of its topics' md5sums checked against what that file (or the cache) gives."""
+    reconstructed = _is_action(own, action.type, origin)
+    registry = own if reconstructed else wider
+    if not reconstructed and not _is_action(wider, action.type, origin):
+        return [
+            f"no definition of {action.type} (used by {action.name}): its goal, result and "
+            "feedback texts did not all come (a ROS 1 node sends the texts of what it publishes "
+            "only); add the folder with its package to the manifest's interfaces, or discover "
+            "through a rosbridge, which sends them all"
+        ]
+    for topic in action.topics:
+        where = registry if _lookup(registry, topic.type, origin) is not None else wider
+        spec = _lookup(where, topic.type, origin)
+        if topic.md5 and isinstance(spec, MessageSpec):
+            _check_md5(where, spec, topic.md5, topic.name, origin, reconstructed=where is own)
+    return []
+
+
+def _is_action(registry: Registry, type_name: str, origin: str) -> bool:
+    try:
+        return isinstance(registry.find(type_name), ActionSpec)
+    except LocatedError as error:
+        first = error.diagnostics[0]
+        raise UserError(
+            f"the definition of {type_name} rebuilt from {origin}'s texts does not parse: "
+            f"line {first.location.line}: {first.message}"
+        ) from None
 
 
 def _lookup(registry: Registry, type_name: str, origin: str) -> MessageSpec | ServiceSpec | None:

@@ -19,6 +19,7 @@ from unityscaffold.interfaces.model import Dialect
 
 __all__ = [
     "Direction",
+    "DiscoveredAction",
     "DiscoveredService",
     "DiscoveredTopic",
     "Discovery",
@@ -103,6 +104,29 @@ class DiscoveredService:
 
 
 @dataclass(frozen=True, slots=True)
+class DiscoveredAction:
+    """A ROS 1 action: actionlib's five topics under ``name``, found together.
+
+    ``role`` is Unity's (``client`` when the ROS system serves the action, ``server`` when it
+    only sends goals), ``None`` when the graph cannot tell. ``topics`` are the five topics as
+    discovered (goal, cancel, status, feedback, result), for their definitions and md5sums.
+    """
+
+    name: str
+    type: str
+    role: str | None
+    topics: tuple[DiscoveredTopic, ...]
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "name": self.name,
+            "type": self.type,
+            "role": self.role,
+            "topics": [t.to_json() for t in self.topics],
+        }
+
+
+@dataclass(frozen=True, slots=True)
 class Discovery:
     """Everything one source reported, sorted by name."""
 
@@ -111,10 +135,12 @@ class Discovery:
     topics: tuple[DiscoveredTopic, ...] = ()
     services: tuple[DiscoveredService, ...] = ()
     warnings: tuple[str, ...] = ()
+    actions: tuple[DiscoveredAction, ...] = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "topics", tuple(sorted(self.topics, key=lambda t: t.name)))
         object.__setattr__(self, "services", tuple(sorted(self.services, key=lambda s: s.name)))
+        object.__setattr__(self, "actions", tuple(sorted(self.actions, key=lambda a: a.name)))
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -122,6 +148,7 @@ class Discovery:
             "source": self.origin,
             "topics": [t.to_json() for t in self.topics],
             "services": [s.to_json() for s in self.services],
+            "actions": [a.to_json() for a in self.actions],
             "warnings": list(self.warnings),
         }
 
