@@ -225,6 +225,36 @@ def test_a_ros1_action_is_named_pkg_action_name_or_pkg_name_when_nothing_else_is
         assert _show(tmp_path / "ws", name, ros="1").code == 0, name
 
 
+@pytest.mark.parametrize("name", ["pkg_msgs/action/Patrol_SendGoal", "pkg_msgs/Patrol_GetResult"])
+def test_a_ros2_actions_derived_service_is_refused_with_hints_that_work(name, tmp_path):
+    build_tree(tmp_path, AMBIGUOUS)
+    run = _show(tmp_path / "ws", name, ros="2")
+    assert run.code == 2 and "Traceback" not in run.err
+    assert f"'{name}' is a service rosidl derives from the action pkg_msgs/action/Patrol" in (
+        run.err
+    )
+    hinted = _hinted(run.err)
+    service = "pkg_msgs/action/Patrol_" + name.rsplit("_", 1)[1]
+    assert hinted == ["pkg_msgs/action/Patrol", f"{service}_Request", f"{service}_Response"]
+    for hint in hinted:
+        assert _show(tmp_path / "ws", hint, ros="2").code == 0, hint
+
+
+def test_a_ros2_actions_derived_message_says_where_it_comes_from(tmp_path):
+    build_tree(tmp_path, AMBIGUOUS)
+    for name in (
+        "pkg_msgs/action/Patrol_FeedbackMessage",
+        "pkg_msgs/action/Patrol_SendGoal_Request",
+    ):
+        run = _show(tmp_path / "ws", name, ros="2")
+        assert run.code == 0, run.err
+        assert "derived:    by rosidl from pkg_msgs/action/Patrol, with no text of its own" in (
+            run.out
+        )
+    written = _show(tmp_path / "ws", "pkg_msgs/action/Patrol_Goal", ros="2")
+    assert written.code == 0 and "derived:" not in written.out  # the file's own text
+
+
 @pytest.mark.parametrize("ros", ["1", "2"])
 def test_suggestions_come_from_the_same_package_first_and_work_when_followed(ros, tmp_path):
     build_tree(tmp_path, AMBIGUOUS)

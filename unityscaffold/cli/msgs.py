@@ -17,7 +17,7 @@ from unityscaffold.cli._options import (
 )
 from unityscaffold.errors import Exit, LocatedError
 from unityscaffold.interfaces.describe import Describer
-from unityscaffold.interfaces.model import Interface
+from unityscaffold.interfaces.model import Interface, MessageSpec
 from unityscaffold.interfaces.registry import Registry
 
 app = typer.Typer(
@@ -123,6 +123,10 @@ def _show_text(
     file = registry.file_of(interface)
     origin = f" ({file.origin})" if file else ""
     typer.echo(f"  source:     {data['source']}{origin}")
+    if isinstance(interface, MessageSpec) and not interface.text and interface.owner:
+        # rosidl makes it from its owner's file (_FeedbackMessage, _SendGoal_Request, _Event):
+        # its definition below starts with the types it uses, not with text of its own.
+        typer.echo(f"  derived:    by rosidl from {interface.owner}, with no text of its own")
     for other in registry.shadowed(interface):
         same = file is not None and other.path.read_bytes() == file.path.read_bytes()
         note = "same text" if same else "DIFFERENT text"

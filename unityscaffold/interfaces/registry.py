@@ -23,7 +23,13 @@ from unityscaffold.interfaces.model import (
     ServiceSpec,
 )
 from unityscaffold.interfaces.sources import InterfaceFile, SearchRoot, find_packages, search_roots
-from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
+from unityscaffold.interfaces.suffixes import (
+    ROS1_PART_SUFFIXES,
+    ROS2_GET_RESULT,
+    ROS2_REQUEST,
+    ROS2_RESPONSE,
+    ROS2_SEND_GOAL,
+)
 
 __all__ = ["Registry", "TypeNotFound"]
 
@@ -321,6 +327,9 @@ class Registry:
         kinds: tuple[InterfaceKind, ...] = (),
     ) -> UserError:
         parts = name.strip().split("/")
+        owner = None if note else self._derived_service_owner(parts)
+        if owner is not None:
+            return self._derived_service(name, owner, used_at)
         message = note or f"unknown {self.dialect.label} type '{name}'"
         advice = ""
         looked = f"looked in: {self.looked_in()}"
@@ -336,6 +345,35 @@ class Registry:
         if used_at is not None:
             return LocatedError.at(used_at, message, hint=hint)
         return TypeNotFound(message, hint=hint, advice=advice)
+
+    def _derived_service_owner(self, parts: list[str]) -> str | None:
+        """The action (``pkg/action/X``) whose ``X_SendGoal`` or ``X_GetResult`` ROS 2
+        service ``parts`` names (as ``pkg/X_SendGoal`` or ``pkg/action/X_SendGoal``), if any."""
+        if self.dialect is not Dialect.ROS2 or len(parts) not in (2, 3):
+            return None
+        if len(parts) == 3 and parts[1] != InterfaceKind.ACTION.value:
+            return None
+        for suffix in (ROS2_SEND_GOAL, ROS2_GET_RESULT):
+            short = parts[-1].removesuffix(suffix)
+            if short != parts[-1] and self._file(InterfaceKind.ACTION, parts[0], short):
+                return f"{parts[0]}/action/{short}"
+        return None
+
+    def _derived_service(self, name: str, owner: str, used_at: SourceLocation | None) -> UserError:
+        """rosidl makes ``X_SendGoal`` and ``X_GetResult`` from the ``.action`` file: there is
+        no text to show, and no entry but the action's own can use them."""
+        spelled = f"{owner}{name.strip().split('/')[-1].removeprefix(owner.split('/')[-1])}"
+        message = (
+            f"'{name}' is a service rosidl derives from the action {owner}; it has no "
+            "definition of its own"
+        )
+        advice = (
+            f"show the action: scaffold msgs show {owner}; the service's messages are "
+            f"{spelled}{ROS2_REQUEST} and {spelled}{ROS2_RESPONSE}"
+        )
+        if used_at is not None:
+            return LocatedError.at(used_at, message, hint=advice)
+        return TypeNotFound(message, hint=advice, advice=advice)
 
     def get_all(self, names: Iterable[str]) -> list[Interface]:
         """``get`` for each name; unknown names are all reported in one error."""
