@@ -491,3 +491,16 @@ def test_a_file_with_whole_second_times_is_trusted_only_seconds_later(
     settle()
     assert scaffold(capsysbinary, "apply", "--check")[0] == 0
     assert records(sample) == []
+
+
+def test_a_record_is_readable_by_its_user_only(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # its key holds the whole environment, tokens and passwords included
+    monkeypatch.setenv("SOME_TOKEN", "secret")
+    settle()
+    assert scaffold(capsysbinary, "apply")[0] == 0
+    [record] = records(sample)
+    assert b"secret" in record.read_bytes()
+    assert record.stat().st_mode & 0o077 == 0
+    assert record.parent.stat().st_mode & 0o077 == 0

@@ -463,9 +463,16 @@ class Recorder:
         folder = os.path.dirname(target)
         temp = f"{target}.{os.getpid()}.tmp"
         try:
-            os.makedirs(folder, exist_ok=True)
-            with open(temp, "wb") as handle:
-                marshal.dump(record, handle)
+            # the key holds the whole environment (tokens, passwords): for this user's eyes only
+            os.makedirs(folder, mode=0o700, exist_ok=True)
+            _unlink(temp)  # a dead process's, whose mode is not ours to trust
+            handle = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+            try:
+                data = memoryview(marshal.dumps(record))
+                while data:
+                    data = data[os.write(handle, data) :]
+            finally:
+                os.close(handle)
             os.replace(temp, target)
             _prune(folder)
         except OSError:
