@@ -3,7 +3,8 @@ diffbot_msgs/action/Dock in the UnityEngine stand-in's frame loop with ROS#'s re
 and client (csharp/ActionScenario.cs writes their user halves), for ROS 1 through the real
 rosbridge against rospy's actionlib (data/action_node.py), for ROS 2 against the rosbridge
 double (rosbridge2_double.py). Each way: a goal that succeeds and one that is cancelled, with
-feedback; the user's partial methods run on the frame loop's thread."""
+feedback; the user's partial methods run on the frame loop's thread. ROS 1 also: a goal whose
+first publication is lost (data/late_action_server.py subscribes late) arrives re-sent."""
 
 from __future__ import annotations
 
@@ -24,6 +25,8 @@ from tests.runtime.runtime_helpers import SAMPLE_INTERFACES
 TIMEOUT = 60  # seconds; a guard against a hang only
 # What ROS#'s action consumer writes when it cannot read a result (and drops it).
 ROSSHARP_DROPPED = "Error in ConsumeResultResponse: "
+# What the ROS 2 client warns for a goal without feedback or result after its ResponseTimeout.
+NO_ANSWER = ": no feedback or result for goal "
 # actionlib_msgs/GoalStatus
 PREEMPTED, SUCCEEDED = 2, 3
 
@@ -37,13 +40,16 @@ actions:
   - {{name: /dock_py, type: diffbot_msgs/action/Dock, role: client, gameobject: Robot}}
   - {{name: /dock_cs, type: diffbot_msgs/action/Dock, role: server, gameobject: Robot}}
 """
+# ROS 1 only: a client of data/late_action_server.py.
+LATE = "  - {name: /dock_late, type: diffbot_msgs/action/Dock, role: client, gameobject: Robot}\n"
 
 
 def _generated(tmp_path: Path, ros: int) -> Path:
     project = tmp_path / f"ros{ros}"
     assert run_cli("init", str(project), "--ros", str(ros)).code == 0
     shutil.copytree(SAMPLE_INTERFACES, project / "ws")
-    (project / "robot.yaml").write_text(MANIFEST.format(ros=ros), encoding="utf-8")
+    manifest = MANIFEST.format(ros=ros) + (LATE if ros == 1 else "")
+    (project / "robot.yaml").write_text(manifest, encoding="utf-8")
     done = run_cli("apply", str(project / "robot.yaml"))
     assert done.code == 0, done.err
     return project / "Assets" / "RosGenerated"
@@ -96,20 +102,38 @@ def test_ros1_action_scripts_against_rospy_actionlib(
     result = tmp_path / "node.json"
     node_argv = [str(SYSTEM_PYTHON), str(DATA / "action_node.py"), "/dock_py", "/dock_cs"]
     node = start([*node_argv, str(result), str(TIMEOUT)], bridge.env)
+    late_result = tmp_path / "late.json"
+    late_argv = [str(SYSTEM_PYTHON), str(DATA / "late_action_server.py"), "/dock_late"]
+    late = start([*late_argv, str(late_result), str(TIMEOUT)], bridge.env)
     scenario: Lines | None = None
+    late_output = ""
     try:
         assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
+        assert late.wait_for(lambda line: line == "ready", TIMEOUT), late.finish()
         scenario = start([mono, str(exe), bridge.url])
         node.wait_for(lambda line: line == "done", TIMEOUT + 30)
+        late.wait_for(lambda line: line == "done", TIMEOUT)
         scenario.wait_for(lambda line: line.startswith("client_result cancel-me "), TIMEOUT)
+        scenario.wait_for(lambda line: line.startswith("late_result "), TIMEOUT)
     finally:
         node_output = node.finish()
+        late_output = late.finish()
         output = scenario.finish() if scenario else ""
     assert result.exists(), node_output
+    assert late_result.exists(), late_output
     seen = json.loads(result.read_text())
-    report = f"{node_output}\n--- C#:\n{output}"
+    report = f"{node_output}\n--- late server:\n{late_output}\n--- C#:\n{output}"
     lines = output.splitlines()
     ids = _ids(lines)
+
+    # A goal whose first publication was lost (the server subscribed to goals 2 s after its
+    # first status, past rosbridge's one second of replay): the client published it again,
+    # with the same id, on a status that did not list it; the server ran it once.
+    [late_id] = _values(lines, "late_sent")
+    received = json.loads(late_result.read_text())["received"]
+    assert received and set(received) == {late_id}, report
+    assert _values(lines, "late_result") == [f"{late_id} {SUCCEEDED} True 50"], report
+    assert "has not listed goal" not in output, report
 
     # The generated client -> rospy's SimpleActionServer.
     assert set(ids) == {"alpha", "cancel-me"}, report
@@ -178,6 +202,7 @@ def test_ros2_action_scripts_against_the_rosbridge_double(
             double.cancel_goal("/dock_cs", second)
             cancelled.done.wait(TIMEOUT)
             scenario.wait_for(lambda line: line.startswith(ROSSHARP_DROPPED), TIMEOUT)
+            scenario.wait_for(lambda line: NO_ANSWER in line, TIMEOUT)
         finally:
             output = scenario.finish()
         double.wait_unadvertised("/dock_cs", TIMEOUT)
@@ -196,6 +221,10 @@ def test_ros2_action_scripts_against_the_rosbridge_double(
     # A goal the server refuses: ROS# cannot read rosbridge's failure result (its "values" is a
     # text) and drops it, so OnResult is never called for it (README, limitations).
     assert any(line.startswith(ROSSHARP_DROPPED) for line in lines), output
+    # ... but the client warns once its ResponseTimeout (1 s here) passed without an answer,
+    # for that goal only (the others had feedback).
+    warned = [line for line in lines if NO_ANSWER in line]
+    assert len(warned) == 1 and "goal /dock_py:3 of /dock_py " in warned[0], output
 
     # The double (a ROS 2 client) -> the generated server.
     assert _values(lines, "server_goal") == [

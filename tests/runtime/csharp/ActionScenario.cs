@@ -5,6 +5,7 @@
 // what data/action_node.py's side expects (and the rosbridge 2 double's):
 // - client: goal "alpha" once connected; when its result comes, goal "cancel-me", cancelled at
 //   its first feedback; with ROS 2 then goal "reject-me", which the other side refuses;
+//   with ROS 1 also, at once, goal "late" from a second client (/dock_late, DockLateActionClient);
 // - server: every goal gets one feedback (3.5 m); "cancel-me" runs until cancelled (then
 //   SetCanceled: docked false, battery -1), any other goal SetSucceeded (docked, 42.25 %).
 // Compiled with -define:ROS2 for ROS 2. Prints one "key value" line per event; when stdin
@@ -63,6 +64,19 @@ namespace RosGenerated
         }
     }
 
+#if !ROS2
+    // A goal to data/late_action_server.py, which subscribes to its goals only after the
+    // client's first publication of it was lost.
+    public partial class DockLateActionClient
+    {
+        partial void OnResult(string goalId, Status status, DockResult result)
+        {
+            ActionScenario.OnMain();
+            ActionScenario.Report("late_result", goalId + " " + status + " " + result.docked + " " + result.battery.ToString("R"));
+        }
+    }
+
+#endif
     public partial class DockCsActionServer
     {
         partial void OnGoal(string goalId, DockGoal goal, ref bool accept)
@@ -115,6 +129,13 @@ public static class ActionScenario
         var robot = new GameObject("Robot");
         var client = robot.AddComponent<DockPyActionClient>();
         var server = robot.AddComponent<DockCsActionServer>();
+#if ROS2
+        // "reject-me" never gets an answer ROS# can read: warn soon instead of after 10 s.
+        client.ResponseTimeout = 1f;
+#endif
+#if !ROS2
+        var late = robot.AddComponent<DockLateActionClient>();
+#endif
         var ended = new ManualResetEvent(false);
         new Thread(() => { Console.In.ReadToEnd(); ended.Set(); }) { IsBackground = true }.Start();
         bool sent = false;
@@ -127,11 +148,17 @@ public static class ActionScenario
             {
                 sent = true;
                 client.Send("alpha");
+#if !ROS2
+                Report("late_sent", late.SendGoal(new DockGoal("late")));
+#endif
             }
             Thread.Sleep(16);
         }
         UnityEngine.Object.Destroy(server);
         UnityEngine.Object.Destroy(client);
+#if !ROS2
+        UnityEngine.Object.Destroy(late);
+#endif
         Player.Frame();
         Report("off_main_thread", offMain);
         Report("destroyed", Player.FrameCount);

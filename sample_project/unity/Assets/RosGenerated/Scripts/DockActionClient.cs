@@ -34,7 +34,14 @@ namespace RosGenerated
         // Goals and cancels held until the action server's first status: rosbridge's new
         // publisher takes a moment to connect to it, and what it publishes before is lost.
         private readonly List<System.Action> held = new List<System.Action>();
-        private volatile bool serverSeen;
+        // Goals published that no status, feedback or result of the server has named yet (main
+        // thread only). The first status proves the status connection only: rosbridge's goal
+        // publisher may still be connecting to the server's subscription, and rosbridge 0.11
+        // replays to late subscribers only what it published in its first second. So each status
+        // that does not list such a goal publishes it again (same id: actionlib's servers ignore
+        // an id they already track), for up to the RosConnector's SecondsTimeout.
+        private readonly Dictionary<string, Unlisted> unlisted = new Dictionary<string, Unlisted>();
+        private bool serverSeen;
         // When the status subscription was sent, until the server's first status or the one hint that none came.
         private float silentSince = -1f;
 
@@ -83,9 +90,14 @@ namespace RosGenerated
                 return null;
             }
             string goalId = GetType().Name + "-" + System.Guid.NewGuid().ToString("N");
-            var message = new global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionGoal(Stamped(), new Actionlib.GoalID(Now(), goalId), goal);
+            var pending = new Unlisted { Message = new global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionGoal(Stamped(), new Actionlib.GoalID(Now(), goalId), goal) };
             active.Add(goalId);
-            Send(() => Connector.RosSocket.Publish(goalPublicationId, message));
+            unlisted[goalId] = pending;
+            Send(() =>
+            {
+                pending.Since = Time.realtimeSinceStartup;
+                Connector.RosSocket.Publish(goalPublicationId, pending.Message);
+            });
             return goalId;
         }
 
@@ -128,7 +140,45 @@ namespace RosGenerated
 
         private void ReceiveStatus(Actionlib.GoalStatusArray message)
         {
+            lock (received)
+            {
+                received.Enqueue(() => ServerStatus(message));
+            }
+        }
+
+        private void ServerStatus(Actionlib.GoalStatusArray message)
+        {
             serverSeen = true;
+            if (unlisted.Count == 0)
+            {
+                return;
+            }
+            var listed = new HashSet<string>();
+            foreach (Actionlib.GoalStatus status in message.status_list ?? new Actionlib.GoalStatus[0])
+            {
+                listed.Add(status.goal_id.id);
+            }
+            foreach (string goalId in new List<string>(unlisted.Keys))
+            {
+                Unlisted pending = unlisted[goalId];
+                if (listed.Contains(goalId))
+                {
+                    unlisted.Remove(goalId);
+                }
+                else if (pending.Since < 0f)
+                {
+                    // Still held: published with the held goals in Update.
+                }
+                else if (Time.realtimeSinceStartup - pending.Since <= Connector.SecondsTimeout)
+                {
+                    Connector.RosSocket.Publish(goalPublicationId, pending.Message);
+                }
+                else
+                {
+                    unlisted.Remove(goalId);
+                    Debug.LogWarning(GetType().Name + ": the action server of " + ActionName + " (diffbot_msgs/action/Dock) has not listed goal " + goalId + " in its status " + Connector.SecondsTimeout + " s after it was sent; it may be lost. Its result still comes to OnResult if it runs.", this);
+                }
+            }
         }
         private void ReceiveFeedback(global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionFeedback message)
         {
@@ -151,6 +201,7 @@ namespace RosGenerated
             string goalId = message.status.goal_id.id;
             if (active.Contains(goalId))
             {
+                unlisted.Remove(goalId);
                 OnFeedback(goalId, message.feedback);
             }
         }
@@ -160,6 +211,7 @@ namespace RosGenerated
             string goalId = message.status.goal_id.id;
             if (active.Remove(goalId))
             {
+                unlisted.Remove(goalId);
                 OnResult(goalId, message.status.status, message.result);
             }
         }
@@ -236,6 +288,13 @@ namespace RosGenerated
         private static Std.Header Stamped()
         {
             return new Std.Header { stamp = Now() };
+        }
+
+        private sealed class Unlisted
+        {
+            public global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionGoal Message;
+            // When first published; negative while held.
+            public float Since = -1f;
         }
 
         private bool FindConnector()

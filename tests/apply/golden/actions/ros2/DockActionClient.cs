@@ -15,12 +15,20 @@ namespace RosGenerated
         public RosConnector Connector;
         [Tooltip("ROS action name.")]
         public string ActionName = "/dock";
+        [Tooltip("Seconds to wait for a goal's first feedback or its result before warning that none came.")]
+        public float ResponseTimeout = 10f;
 
         // ROS# calls the handlers on its socket thread; what they bring waits here, in arrival
         // order, for the main thread.
         private readonly Queue<System.Action> received = new Queue<System.Action>();
         // The goals sent that have no result yet (main thread only).
         private readonly HashSet<string> active = new HashSet<string>();
+        // The goals with neither feedback nor result yet, in the order sent, and when each was
+        // sent (main thread only). ROS# 2.2.1 cannot read rosbridge's answer to a goal it could
+        // not carry out (a text where the result belongs) and never calls back: such a goal
+        // would wait in silence. It stays active after the warning, so a late result still comes.
+        private readonly Queue<string> unanswered = new Queue<string>();
+        private readonly Dictionary<string, float> sentAt = new Dictionary<string, float>();
 
         /// <summary>Handle feedback on a goal; called on Unity's main thread.</summary>
         partial void OnFeedback(string goalId, global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockFeedback feedback);
@@ -50,6 +58,8 @@ namespace RosGenerated
             };
             string goalId = Connector.RosSocket.SendActionGoalRequest<global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionGoal, global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockGoal, global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionFeedback, global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionResult>(message, ReceiveResult, ReceiveFeedback);
             active.Add(goalId);
+            unanswered.Enqueue(goalId);
+            sentAt[goalId] = Time.realtimeSinceStartup;
             return goalId;
         }
 
@@ -94,6 +104,7 @@ namespace RosGenerated
         {
             if (active.Contains(message.id))
             {
+                sentAt.Remove(message.id);
                 OnFeedback(message.id, message.values);
             }
         }
@@ -104,6 +115,7 @@ namespace RosGenerated
             {
                 return;
             }
+            sentAt.Remove(message.id);
             if (!message.result)
             {
                 Debug.LogWarning(GetType().Name + ": rosbridge could not carry out goal " + message.id + " of " + ActionName + " (diffbot_msgs/action/Dock); its log says why.", this);
@@ -125,6 +137,20 @@ namespace RosGenerated
                     next = received.Dequeue();
                 }
                 next();
+            }
+            while (unanswered.Count > 0)
+            {
+                string goalId = unanswered.Peek();
+                float sent;
+                if (sentAt.TryGetValue(goalId, out sent) && Time.realtimeSinceStartup - sent <= ResponseTimeout)
+                {
+                    break;
+                }
+                unanswered.Dequeue();
+                if (sentAt.Remove(goalId))
+                {
+                    Debug.LogWarning(GetType().Name + ": no feedback or result for goal " + goalId + " of " + ActionName + " (diffbot_msgs/action/Dock) within " + ResponseTimeout + " s. Is the action advertised? If so, rosbridge's log says why the goal failed (ROS# cannot read its answer); a goal still running ends in OnResult as usual.", this);
+                }
             }
         }
         // Sending needs the connection; what is asked before it is up would be lost, so say so.
