@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from unityscaffold.cli import _app, _noop, main
+from unityscaffold.cli import _app, _noop, _recorder, main
 from unityscaffold.resources import template_environment
 
 REPO = Path(__file__).resolve().parents[2]
@@ -209,7 +209,7 @@ def test_a_run_that_writes_fails_or_is_racy_leaves_no_record(
     assert records(sample) == []
     settle()
     # every file counts as changed after the run started: nothing is trusted
-    monkeypatch.setattr(_noop.time, "time_ns", lambda: 0)
+    monkeypatch.setattr(_recorder.time, "time_ns", lambda: 0)
     assert scaffold(capsysbinary, "apply")[0] == 0
     assert records(sample) == []
 
@@ -428,7 +428,7 @@ def test_a_deleted_current_folder_means_the_usual_way(
     monkeypatch.chdir(gone)
     gone.rmdir()
     assert _noop.replay(["apply"]) is None
-    assert _noop.Recorder.start(["apply"]) is None
+    assert _recorder.Recorder.start(["apply"]) is None
 
 
 def test_a_temporary_file_of_a_running_writer_is_not_replayed_once_the_writer_is_gone(
@@ -486,7 +486,7 @@ def test_a_file_with_whole_second_times_is_trusted_only_seconds_later(
         second = 1_000_000_000
         return (mode, size, mtime - mtime % second, ctime - ctime % second, inode, device)
 
-    monkeypatch.setattr(_noop, "_probe", whole_seconds)
+    monkeypatch.setattr(_recorder, "_probe", whole_seconds)
     _append("robot.yaml", "# edited\n")(sample)
     settle()
     assert scaffold(capsysbinary, "apply", "--check")[0] == 0

@@ -1,7 +1,8 @@
 """The ``scaffold`` command: a thin typer layer. Only this package prints or exits.
 
 ``main`` first asks the no-op record (``_noop``) whether this exact command already verified
-this unchanged project; only if not does it load typer and the commands (``_app``).
+this unchanged project; only if not does it load typer and the commands (``_app``), watched
+by ``_recorder``.
 """
 
 from __future__ import annotations
@@ -34,7 +35,9 @@ def main(argv: list[str] | None = None) -> int:
     replayed = _noop.replay(args)
     if replayed is not None:
         return replayed
-    recorder = _noop.Recorder.start(args)
+    from unityscaffold.cli._recorder import Recorder
+
+    recorder = Recorder.start(args)
     status: Any = None
     try:
         from unityscaffold.cli._app import run_cli

@@ -11,7 +11,7 @@ import typer
 from unityscaffold.apply.init import init_project
 from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
 from unityscaffold.apply.run import Mode, Outcome, run
-from unityscaffold.cli import _noop
+from unityscaffold.cli import _recorder
 from unityscaffold.cli._options import find_manifest
 from unityscaffold.errors import Exit
 from unityscaffold.manifest.modeline import stale_schema
@@ -65,7 +65,7 @@ def _verified(outcome: Outcome) -> None:
     """Tell the no-op record when this run found the project in sync and wrote nothing."""
     plan = outcome.plan
     if plan.in_sync and not plan.conflicts and not outcome.written and not outcome.deleted:
-        _noop.verified()
+        _recorder.verified()
 
 
 def _drift_advice(manifest: Path, outcome: Outcome) -> str:
