@@ -158,3 +158,15 @@ def test_apply_help_does_not_break_its_prose_where_the_docstring_does(
     # the docstring breaks its lines after '(see --force);' and before 'GameObjects are known'
     assert "stop it (see --force); your code belongs in the *.User.cs files" in run.out
     assert "never rewritten. GameObjects are known by identity" in run.out
+
+
+def test_a_command_in_a_deleted_folder_says_so_without_a_traceback(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    gone = tmp_path / "gone"
+    gone.mkdir()
+    monkeypatch.chdir(gone)
+    gone.rmdir()
+    run = run_cli("apply")
+    assert run.code == 2 and "Traceback" not in run.err
+    assert run.err.startswith("error: the current folder no longer exists\n  hint: cd to")

@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import importlib
+import os
 from typing import Any
 
 import typer
 
 from unityscaffold import __version__
 from unityscaffold.cli._text import one_line_paragraphs
-from unityscaffold.errors import Exit, ScaffoldError
+from unityscaffold.errors import Exit, ScaffoldError, UserError
 
 __all__ = ["build_app", "run_cli"]
 
@@ -135,6 +136,13 @@ def run_cli(args: list[str]) -> int:
         if isinstance(exc, _usage_errors()):
             exc.show()  # type: ignore[attr-defined]
             return int(Exit.USER_ERROR)
+        if isinstance(exc, OSError) and _folder_gone():
+            gone = UserError(
+                "the current folder no longer exists",
+                hint="cd to a folder that does and run the command again",
+            )
+            typer.echo(gone.render(), err=True)
+            return int(Exit.USER_ERROR)
         import traceback
 
         typer.echo(
@@ -144,3 +152,12 @@ def run_cli(args: list[str]) -> int:
         )
         return int(Exit.INTERNAL)
     return status if isinstance(status, int) else int(Exit.OK)
+
+
+def _folder_gone() -> bool:
+    """Whether the current folder was deleted (every relative path, the manifest's too, fails)."""
+    try:
+        os.getcwd()
+    except OSError:
+        return True
+    return False
