@@ -504,3 +504,23 @@ def test_a_record_is_readable_by_its_user_only(
     assert b"secret" in record.read_bytes()
     assert record.stat().st_mode & 0o077 == 0
     assert record.parent.stat().st_mode & 0o077 == 0
+
+
+def test_a_run_that_changes_its_folder_leaves_no_record(
+    sample: Path, capsysbinary: pytest.CaptureFixture[bytes], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # relative paths read after it are relative to another folder than the key's
+    from unityscaffold.cli import apply as apply_cli
+
+    real = apply_cli.stale_schema
+
+    def moving_away_and_back(manifest: Path) -> Path | None:
+        here = os.getcwd()
+        os.chdir(sample.parent)
+        os.chdir(here)
+        return real(manifest)
+
+    monkeypatch.setattr(apply_cli, "stale_schema", moving_away_and_back)
+    settle()
+    assert scaffold(capsysbinary, "apply")[0] == 0
+    assert records(sample) == []

@@ -56,8 +56,11 @@ _WRITE_EVENTS = frozenset(
 )
 
 #: Events after which the answer may depend on more than files: not recorded. ``os.kill``
-#: asks whether a writer still runs (its temporary file is a leftover only once it has gone).
+#: asks whether a writer still runs (its temporary file is a leftover only once it has gone);
+#: after ``os.chdir`` relative paths name other files than in the key's folder.
 _ELSEWHERE = (
+    "os.chdir",
+    "os.fchdir",
     "socket.",
     "subprocess.",
     "os.exec",
