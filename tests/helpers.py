@@ -11,6 +11,7 @@ import signal
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -129,3 +130,21 @@ def deadline(seconds: int, what: str) -> Iterator[None]:
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, previous)
+
+
+def command_paths() -> dict[tuple[str, ...], bool]:
+    """Every command of ``scaffold`` (the root too) as its words, and whether it is a group."""
+    import typer
+
+    from unityscaffold.cli import build_app
+
+    found: dict[tuple[str, ...], bool] = {}
+
+    def walk(command: Any, path: tuple[str, ...]) -> None:
+        subcommands = getattr(command, "commands", None)  # only groups have them
+        found[path] = subcommands is not None
+        for name, sub in (subcommands or {}).items():
+            walk(sub, (*path, name))
+
+    walk(typer.main.get_command(build_app([])), ())
+    return found

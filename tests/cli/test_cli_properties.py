@@ -15,7 +15,7 @@ import shutil
 from pathlib import Path
 
 import pytest
-from helpers import run_cli
+from helpers import command_paths, run_cli
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -61,6 +61,10 @@ ARGUMENTS = st.tuples(
         max_size=5,
     ),
 ).map(lambda t: [*t[0], *(a for pair in t[1] for a in pair)])
+
+
+def test_every_command_is_drawn_from() -> None:
+    assert {tuple(c) for c in COMMANDS} == set(command_paths())
 
 
 @pytest.fixture(scope="module")

@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from helpers import run_cli
+from helpers import command_paths, run_cli
 
 from unityscaffold.cli import one_line_paragraphs
 
@@ -94,6 +94,12 @@ HELPED = [
     ["scene", "ls"],
     ["scene", "attach"],
 ]
+
+
+def test_every_command_but_the_groups_is_helped() -> None:
+    """A new command joins HELPED, so its help is checked too."""
+    leaves = {path for path, group in command_paths().items() if not group or not path}
+    assert {tuple(c) for c in HELPED} == leaves
 
 
 @pytest.mark.parametrize("command", HELPED, ids=lambda c: " ".join(c) or "scaffold")
