@@ -21,6 +21,11 @@ ROS1_PACKAGES = (
     "topic_tools trajectory_msgs visualization_msgs"
 ).split()
 ROS2_EXCLUDED = {"test_msgs"}  # a grammar torture set, not something robots use
+# ... except its Fibonacci action: no PyPI wheel brings a standard action package (Jazzy's
+# example_interfaces, action_tutorials_interfaces and nav2_msgs have none), and the built-in
+# set needs one action so that a fresh ROS 2 project can try `actions:`. It is the action of
+# ROS 2's tutorials (example_interfaces/action/Fibonacci has the same three fields).
+ROS2_FROM_EXCLUDED = {"test_msgs": ("action/Fibonacci.action",)}
 # Jazzy's tf2_msgs has no PyPI wheel, and /tf needs its TFMessage. That file's text is the same
 # in ROS 1 and ROS 2 (geometry2's tf2_msgs/msg/TFMessage.msg, one line), so it is copied from
 # Debian's ROS 1 package. The package's other files differ between the two (TF2Error's
@@ -56,6 +61,12 @@ def main() -> int:
             continue
         if any((source / kind).is_dir() for kind in ("msg", "srv", "action")):
             total += copy_package(source, TARGET / "ros2" / source.name)
+    for package, files in ROS2_FROM_EXCLUDED.items():
+        for relative in files:
+            dest = TARGET / "ros2" / package / relative
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(share / package / relative, dest)
+            total += 1
     for package, files in ROS2_FROM_ROS1.items():
         if (TARGET / "ros2" / package).exists():
             continue  # a wheel brought the package itself

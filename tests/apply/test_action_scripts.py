@@ -10,6 +10,7 @@ Regenerate the golden files with ``UNITYSCAFFOLD_UPDATE=1`` and review the diff.
 
 from __future__ import annotations
 
+import json
 import re
 import shutil
 import subprocess
@@ -131,3 +132,21 @@ def test_the_stubs_action_operations_are_declared_as_rossharps() -> None:
     stub = UNITY_STUBS[1].read_text(encoding="utf-8")
 
     assert _declarations(stub, ROS2_OPERATIONS) == _declarations(real, ROS2_OPERATIONS)
+
+
+def test_the_ros2_starters_builtin_action_applies_and_compiles(mcs: str, tmp_path: Path) -> None:
+    """A fresh ROS 2 project can use an action with nothing but unityscaffold: the starter's
+    example names the built-in test_msgs/action/Fibonacci (Jazzy's, no ROS installed)."""
+    project = tmp_path / "p"
+    assert run_cli("init", str(project), "--ros", "2").code == 0
+    manifest = project / "robot.yaml"
+    starter = manifest.read_text(encoding="utf-8")
+    example = "#  - {name: /fibonacci, type: test_msgs/action/Fibonacci, role: client}\n"
+    assert example in starter
+    manifest.write_text(starter.replace(example, example[1:]), encoding="utf-8")
+    applied = run_cli("apply", str(manifest), "--json")
+    assert applied.code == 0, applied.err
+    files = {entry["path"] for entry in json.loads(applied.out)["files"]}
+    assert "Assets/RosGenerated/Scripts/FibonacciActionClient.cs" in files
+    assert run_cli("apply", "--check", str(manifest)).code == 0
+    compile_applied_project(mcs, manifest, tmp_path / "build", ros2=True)

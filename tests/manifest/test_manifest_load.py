@@ -210,8 +210,9 @@ def test_starter_manifest_examples_are_valid_once_uncommented(ros: int) -> None:
     m = parse_manifest(uncommented, Path("/p/robot.yaml"))
     assert [t.class_name for t in m.topics] == ["CmdVelPublisher", "OdomSubscriber"]
     assert len(m.services) == 1 and len(m.components) == 1
-    # ROS 2's standard interfaces define no action: its starter only describes the section
-    assert [a.class_name for a in m.actions] == (["MoveBaseActionClient"] if ros == 1 else [])
+    # ROS 2's standard interfaces define no action: its example is the built-in Fibonacci
+    expected = "MoveBaseActionClient" if ros == 1 else "FibonacciActionClient"
+    assert [a.class_name for a in m.actions] == [expected]
 
 
 def test_starter_manifest_rejects_bad_arguments() -> None:

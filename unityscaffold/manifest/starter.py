@@ -59,8 +59,9 @@ objects:
 """)
 
 
-# ROS 1's definitions built into unityscaffold include an action (move_base_msgs); ROS 2's
-# standard interfaces have none, so its example needs the action's package in `interfaces`.
+# ROS 1's definitions built into unityscaffold include a robot's action (move_base_msgs); ROS 2's
+# standard interfaces have none, so its example is the tutorials' Fibonacci (built in from
+# test_msgs), and a robot's own action needs its package in `interfaces`.
 _ACTIONS = {
     1: """\
 # Each entry: name, type (pkg/action/Name), role (client: Unity sends goals; server: Unity
@@ -70,9 +71,10 @@ actions:
 """,
     2: """\
 # Each entry: name, type (pkg/action/Name), role (client: Unity sends goals; server: Unity
-# carries them out), gameobject, scene. The action's package goes in `interfaces`, e.g. for
-# {name: /navigate_to_pose, type: nav2_msgs/action/NavigateToPose, role: client}.
+# carries them out), gameobject, scene. A robot's action needs its package in `interfaces`,
+# e.g. for {name: /navigate_to_pose, type: nav2_msgs/action/NavigateToPose, role: client}.
 actions:
+#  - {name: /fibonacci, type: test_msgs/action/Fibonacci, role: client}
 """,
 }
 
