@@ -32,6 +32,11 @@ TYPES = [
     "rosgraph_msgs/Log",
     "geometry_msgs/Twist",
     "std_msgs/Int32",
+    "move_base_msgs/MoveBaseActionGoal",  # an action's topics, recorded in a bag
+    "move_base_msgs/MoveBaseActionFeedback",
+    "move_base_msgs/MoveBaseActionResult",
+    "actionlib_msgs/GoalID",
+    "actionlib_msgs/GoalStatusArray",
     "std_srvs/Trigger.srv",
     "scaffold_test_msgs/Calibrate.srv",
 ]

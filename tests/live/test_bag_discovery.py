@@ -80,6 +80,48 @@ def test_a_ros1_bag_gives_topics_and_verified_definitions(
     assert Ros1Identity(alone).md5sum(spec) == genmsg_truth["scaffold_test_msgs/Reading"]["md5sum"]
 
 
+def test_a_ros1_bag_with_an_actions_topics_gives_the_action_and_its_file(
+    genmsg_truth: dict[str, Any], tmp_path: Path
+) -> None:
+    """All five topics of /move_base recorded: one action, whose .action file comes back from
+    genmsg's full texts byte for byte as Debian installs it, verified by the recorded md5sums."""
+    kinds = {
+        "goal": "move_base_msgs/MoveBaseActionGoal",
+        "cancel": "actionlib_msgs/GoalID",
+        "status": "actionlib_msgs/GoalStatusArray",
+        "feedback": "move_base_msgs/MoveBaseActionFeedback",
+        "result": "move_base_msgs/MoveBaseActionResult",
+    }
+    with Writer1(tmp_path / "run.bag") as writer:
+        for part, kind in kinds.items():
+            connection = writer.add_connection(
+                f"/move_base/{part}",
+                kind.replace("/", "/msg/"),
+                msgdef=genmsg_truth[kind]["definition"],
+                md5sum=genmsg_truth[kind]["md5sum"],
+            )
+            writer.write(connection, 1, b"\x00")
+    found = discover(bag=tmp_path / "run.bag")
+    assert found.topics == ()
+    assert [(a.name, a.type, a.role) for a in found.actions] == [
+        ("/move_base", "move_base_msgs/action/MoveBase", "client")  # its status was recorded
+    ]
+    staged = stage_definitions(found, tmp_path / "cache")
+    assert staged.warnings == []
+    staged.commit()
+    rebuilt = tmp_path / "cache" / "move_base_msgs" / "action" / "MoveBase.action"
+    assert (
+        rebuilt.read_bytes()
+        == Path("/usr/share/move_base_msgs/action/MoveBase.action").read_bytes()
+    )
+    alone = Registry.load(
+        Dialect.ROS1, [tmp_path / "cache"], use_environment=False, use_builtin=False
+    )
+    for kind in kinds.values():
+        spec = alone.message(kind)
+        assert Ros1Identity(alone).md5sum(spec) == genmsg_truth[kind]["md5sum"], kind
+
+
 def test_a_ros1_bag_with_a_wrong_md5sum_names_the_type(
     genmsg_truth: dict[str, Any], tmp_path: Path
 ) -> None:

@@ -157,7 +157,7 @@ def _action_definitions(action: DiscoveredAction) -> list[Definition]:
 def _part_text(text: str) -> str:
     """A goal, result or feedback section's lines, each ended by a newline as genaction does."""
     text = text.removeprefix(ACTION_BANNER)
-    return text if text.endswith("\n") else text + "\n"
+    return text if not text or text.endswith("\n") else text + "\n"  # "": no lines at all
 
 
 def _write(staging: Path, definitions: Sequence[Definition], cache: Path) -> list[Path]:
