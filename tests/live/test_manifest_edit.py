@@ -234,3 +234,18 @@ def test_actionlib_topic_sets_become_actions_and_partial_sets_stay_topics(tmp_pa
     ]
     ros2 = dataclasses.replace(recorded, dialect=Dialect.ROS2)
     assert group_actions(ros2) == ros2  # ROS 2 actions are not topics of this shape
+
+
+def test_an_action_whose_topics_are_listed_already_is_not_added_again() -> None:
+    """A manifest discovered before actions were recognised lists their five topics: adding
+    the action too would make a second set of scripts on the same topics."""
+    found = group_actions(
+        Discovery(Dialect.ROS1, "run.bag", tuple(_action_topics("/dock", "diffbot_msgs", "Dock")))
+    )
+    listed = EXAMPLE.replace(
+        "topics:\n",
+        "topics:\n  - {name: /dock/goal, type: diffbot_msgs/DockActionGoal, direction: publish}\n",
+    )
+    edited = edit_manifest(listed, found, cache_entry="ros_definitions")
+    assert edited.added_actions == () and edited.already_listed == ("/dock",)
+    assert "actions:" not in edited.text

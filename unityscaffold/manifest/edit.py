@@ -302,11 +302,15 @@ def edit_manifest(
         if discovery.services
         else ([], [])
     )
+    # An action whose topics are listed as topics (discovered before actions were recognised)
+    # counts as listed: adding it would make a second set of scripts on the same topics.
+    as_topics = _listed_names(document.get("topics") or ())
+    by_topics = [a.name for a in discovery.actions if any(t.name in as_topics for t in a.topics)]
+    wanted = [a for a in discovery.actions if a.name not in by_topics]
     actions, skipped_actions = (
-        _add_actions(_list(document, "actions", path), discovery.actions)
-        if discovery.actions
-        else ([], [])
+        _add_actions(_list(document, "actions", path), wanted) if wanted else ([], [])
     )
+    skipped_actions += by_topics
     result = ManifestEdit(
         text,
         tuple(topics),
