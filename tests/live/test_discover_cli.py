@@ -21,6 +21,11 @@ from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 
+# With the silent /ghost excluded every node answers, so a generous limit costs nothing; at
+# 1 s a loaded machine sometimes missed the rospy node's answer, and its topics' definitions
+# were then skipped with a warning (run twice, the second run fetched what the first missed).
+NODE_TIMEOUT = "10"
+
 
 @pytest.fixture()
 def project(tmp_path: Path) -> Path:
@@ -39,7 +44,7 @@ def test_discover_fills_manifest_and_cache_from_a_live_master(
         "--master",
         ros1_system.url,
         "--timeout",
-        "1",
+        NODE_TIMEOUT,
         "--exclude",
         "ghost",
     )
@@ -96,7 +101,7 @@ def test_discovering_twice_changes_nothing(
         "--master",
         ros1_system.url,
         "--timeout",
-        "1",
+        NODE_TIMEOUT,
         "--exclude",
         "ghost",
     )
@@ -147,7 +152,7 @@ def test_dry_run_writes_nothing(
         "--master",
         ros1_system.url,
         "--timeout",
-        "1",
+        NODE_TIMEOUT,
         "--exclude",
         "ghost",
         "--dry-run",
@@ -181,7 +186,7 @@ def test_a_wrong_ros_version_fails_before_writing(
         "--master",
         ros1_system.url,
         "--timeout",
-        "1",
+        NODE_TIMEOUT,
         "--exclude",
         "ghost",
     )
@@ -232,7 +237,7 @@ def test_discovered_definitions_generate_compiling_csharp(
         "--master",
         ros1_system.url,
         "--timeout",
-        "1",
+        NODE_TIMEOUT,
         "--exclude",
         "ghost",
     )
