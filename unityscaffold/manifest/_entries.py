@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TypeVar
 
 from unityscaffold.fileout import MAX_NAME_BYTES
 from unityscaffold.manifest import _spec as spec
@@ -280,55 +281,49 @@ def _create(r: Reader, m: YMap, ctx: Context) -> bool:
 
 
 def read_service(r: Reader, node: YNode, ctx: Context) -> Service | None:
-    m = r.mapping(node, spec.SERVICE)
-    if m is None:
-        return None
-    name = _ros_name(r, m, ctx)
-    type_ = r.text(
-        m,
-        "type",
-        EXPECT_SRV_TYPE,
-        spec.SRV_TYPE,
-        hint=_type_hint(m, "srv"),
-    )
-    if type_ is not None and not _no_action_part(r, m, ctx, EXPECT_SRV_TYPE):
-        type_ = None
-    choice = r.choice(m, "role", [x.value for x in Role])
-    role = Role(choice) if choice else None
-    service = Service(
-        name=name or "",
-        type=type_ or "",
-        role=role or Role.CLIENT,
-        gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
-        scene=read_scene(r, m, ctx, "service") or "",
-        create=_create(r, m, ctx),
-        class_name=_class_name(r, m, name, role),
-        locations=locations(m),
-    )
-    return service if name and type_ and role else None
+    return _read_role_entry(r, node, ctx, Service, spec.SERVICE, "srv", EXPECT_SRV_TYPE)
 
 
 def read_action(r: Reader, node: YNode, ctx: Context) -> Action | None:
-    m = r.mapping(node, spec.ACTION)
+    return _read_role_entry(r, node, ctx, Action, spec.ACTION, "action", EXPECT_ACTION_TYPE)
+
+
+_RoleEntry = TypeVar("_RoleEntry", Service, Action)
+
+
+def _read_role_entry(
+    r: Reader,
+    node: YNode,
+    ctx: Context,
+    entry: type[_RoleEntry],
+    section: spec.Section,
+    kind: str,
+    expected_type: str,
+) -> _RoleEntry | None:
+    """A service or an action: the same keys, read in the same order (so their errors come in
+    the same order); they differ only in the kind of type they name."""
+    m = r.mapping(node, section)
     if m is None:
         return None
+    in_actions = kind == "action"
+    pattern = spec.ACTION_TYPE if in_actions else spec.SRV_TYPE
     name = _ros_name(r, m, ctx)
-    type_ = r.text(m, "type", EXPECT_ACTION_TYPE, spec.ACTION_TYPE, hint=_type_hint(m, "action"))
-    if type_ is not None and not _no_action_part(r, m, ctx, EXPECT_ACTION_TYPE, in_actions=True):
+    type_ = r.text(m, "type", expected_type, pattern, hint=_type_hint(m, kind))
+    if type_ is not None and not _no_action_part(r, m, ctx, expected_type, in_actions=in_actions):
         type_ = None
     choice = r.choice(m, "role", [x.value for x in Role])
     role = Role(choice) if choice else None
-    action = Action(
+    read = entry(
         name=name or "",
         type=type_ or "",
         role=role or Role.CLIENT,
         gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
-        scene=read_scene(r, m, ctx, "action") or "",
+        scene=read_scene(r, m, ctx, "action" if in_actions else "service") or "",
         create=_create(r, m, ctx),
-        class_name=_class_name(r, m, name, role, action=True),
+        class_name=_class_name(r, m, name, role, action=in_actions),
         locations=locations(m),
     )
-    return action if name and type_ and role else None
+    return read if name and type_ and role else None
 
 
 def read_component(r: Reader, node: YNode, ctx: Context) -> Component | None:
