@@ -50,6 +50,15 @@ def mono() -> str:
 
 
 @pytest.fixture(scope="session")
+def actionlib_python() -> None:
+    """rospy's actionlib under the system Python, for the ROS 1 action tests' rospy side."""
+    works = subprocess.run(
+        [str(SYSTEM_PYTHON), "-c", "import actionlib"], capture_output=True, check=False
+    )
+    require(works.returncode == 0, "rospy's actionlib (Debian package python3-actionlib)")
+
+
+@pytest.fixture(scope="session")
 def sample_python(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The sample's diffbot_msgs as genpy modules (messages, action messages, service)."""
     require(Path("/usr/lib/genpy/genmsg_py.py").exists(), "Debian's python3-genpy")

@@ -10,10 +10,9 @@ from __future__ import annotations
 
 import json
 import shutil
-import subprocess
 from pathlib import Path
 
-from helpers import SYSTEM_PYTHON, require, run_cli
+from helpers import SYSTEM_PYTHON, run_cli
 
 from tests.runtime.bridge import DATA, Bridge
 from tests.runtime.client import CSHARP, mcs_compile
@@ -88,6 +87,7 @@ def _ids(lines: list[str]) -> dict[str, str]:
 
 
 def test_ros1_action_scripts_against_rospy_actionlib(
+    actionlib_python: None,
     bridge: Bridge,
     mcs: str,
     mono: str,
@@ -95,8 +95,6 @@ def test_ros1_action_scripts_against_rospy_actionlib(
     rossharp_package: Path,
     tmp_path: Path,
 ) -> None:
-    works = subprocess.run([str(SYSTEM_PYTHON), "-c", "import actionlib"], capture_output=True)
-    require(works.returncode == 0, "rospy's actionlib (Debian package python3-actionlib)")
     generated = _generated(tmp_path, 1)
     exe = _build(mcs, rossharp_client, rossharp_package, generated, tmp_path / "bin", 1)
     result = tmp_path / "node.json"

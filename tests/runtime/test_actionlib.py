@@ -8,11 +8,9 @@ data/action_node.py)."""
 from __future__ import annotations
 
 import json
-import subprocess
 from pathlib import Path
 
-import pytest
-from helpers import SYSTEM_PYTHON, require
+from helpers import SYSTEM_PYTHON
 
 from tests.runtime.bridge import DATA, Bridge
 from tests.runtime.client import CSHARP, mcs_compile
@@ -24,14 +22,6 @@ from unityscaffold.interfaces.model import Dialect
 TIMEOUT = 60  # seconds; a guard against a hang only
 # actionlib_msgs/GoalStatus
 PREEMPTED, SUCCEEDED = 2, 3
-
-
-@pytest.fixture(scope="module")
-def actionlib_python() -> None:
-    works = subprocess.run(
-        [str(SYSTEM_PYTHON), "-c", "import actionlib"], capture_output=True, check=False
-    )
-    require(works.returncode == 0, "rospy's actionlib (Debian package python3-actionlib)")
 
 
 def _build(mcs: str, client: Path, out: Path) -> Path:
