@@ -81,25 +81,9 @@ def test_a_manifest_given_is_used_as_given(project: Path, monkeypatch: pytest.Mo
     assert run.code == 2 and "manifest missing.yaml does not exist" in run.err
 
 
-HELPED = [
-    [],
-    ["apply"],
-    ["plan"],
-    ["init"],
-    ["discover"],
-    ["schema"],
-    ["msgs", "list"],
-    ["msgs", "show"],
-    ["msgs", "gen"],
-    ["scene", "ls"],
-    ["scene", "attach"],
-]
-
-
-def test_every_command_but_the_groups_is_helped() -> None:
-    """A new command joins HELPED, so its help is checked too."""
-    leaves = {path for path, group in command_paths().items() if not group or not path}
-    assert {tuple(c) for c in HELPED} == leaves
+# every command but the groups (the root is helped), as the app has them: a new one is
+# checked at once
+HELPED = [list(path) for path, group in command_paths().items() if not group or not path]
 
 
 @pytest.mark.parametrize("command", HELPED, ids=lambda c: " ".join(c) or "scaffold")
