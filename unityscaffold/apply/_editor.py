@@ -161,7 +161,7 @@ class SceneEditor:
                 self.plan.edits.append(readded)
         elif not existed:
             self.plan.edits.append(added)
-        elif self.doc.revision != revision and not _added_here(self.plan.edits, name, path):
+        elif self.doc.revision != revision and not _said(self.plan.edits, name, path):
             self.plan.edits.append(f"update {name} on {path}")
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
@@ -203,7 +203,11 @@ class SceneEditor:
         return self.doc.find_component(go, old.script)
 
 
-def _added_here(edits: list[str], name: str, path: str) -> bool:
-    return f"add {name} to {path}" in edits or any(
-        e.startswith(f"re-add {name} to {path} ") for e in edits
+def _said(edits: list[str], name: str, path: str) -> bool:
+    """Whether this run already has a line for the component: one line each, however many
+    passes (plain values, then references) change it."""
+    return (
+        f"add {name} to {path}" in edits
+        or f"update {name} on {path}" in edits
+        or any(e.startswith(f"re-add {name} to {path} ") for e in edits)
     )

@@ -2,8 +2,8 @@
 
 Objects go first (parents before children), so that every other entry, and every ``@Path`` a
 field refers to, finds them. Only what an entry writes is enforced; the rest stays as the scene
-has it. Built-in components' reference fields are set in a second pass, once every declared
-object exists.
+has it. Built-in components' reference fields are set in a pass of their own, once every
+component of the scene exists (``set_builtin_references``).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from unityscaffold.unity import FieldValue, GameObject, InlineMap, SceneDocument
 from unityscaffold.unity.builtins import BUILTIN_TAGS, builtin_class
 from unityscaffold.unity.rotation import euler_to_quaternion
 
-__all__ = ["Hooks", "declare_objects", "project_tags"]
+__all__ = ["DeclaredObjects", "Hooks", "declare_objects", "project_tags", "set_builtin_references"]
 
 _RECT_TRANSFORM = 224
 _TAGS_RE = re.compile(r"^  tags:\n((?:  - .*\n)*)", re.M)
@@ -150,14 +150,27 @@ class Hooks:
     resolve: Resolver
 
 
+@dataclass(frozen=True, slots=True)
+class DeclaredObjects:
+    """A scene's declared objects after the first pass, for the reference pass."""
+
+    ordered: tuple[SceneObject, ...]
+    edits: list[str]
+    hooks: Hooks
+
+
 def declare_objects(
     doc: SceneDocument,
     objects: list[SceneObject],
     project_root: Path,
     edits: list[str],
     hooks: Hooks,
-) -> None:
-    """Create and update the scene's declared objects, saying what changed in ``edits``."""
+) -> DeclaredObjects:
+    """Create and update the scene's declared objects, saying what changed in ``edits``.
+
+    Built-in components get their values that refer to nothing; ``set_builtin_references``
+    sets the rest once every component of the scene exists.
+    """
     tags = project_tags(project_root)
     ordered = sorted(objects, key=lambda o: o.path.count("/"))
     for item in ordered:
@@ -172,27 +185,42 @@ def declare_objects(
             if go.transform_id is not None:
                 stored = doc.field(go.transform_id, "m_LocalRotation")
                 doc.set_fields(go.transform_id, _transform_fields(item, stored))
-            updated = doc.revision != revision
+            if doc.revision != revision and not created:
+                edits.append(f"update object {item.path}")
         for comp in item.components:
-            builtin = builtin_class(comp.type)
-            assert builtin is not None
-            existed = doc.find_builtin(go, builtin, comp.key) is not None
-            with located_at(comp.location):
-                values = _builtin_values(comp, False, hooks.resolve)
-                doc.ensure_builtin(go, builtin, comp.key, values)
-            if not existed:
-                edits.append(f"add {comp.type} to {item.path}")
-        if updated and not created:
-            edits.append(f"update object {item.path}")
-    for item in ordered:
+            _ensure(doc, item, comp, hooks, edits, references=False)
+    return DeclaredObjects(tuple(ordered), edits, hooks)
+
+
+def set_builtin_references(doc: SceneDocument, declared: DeclaredObjects) -> None:
+    """The declared built-in components' reference fields, in a pass of their own."""
+    for item in declared.ordered:
         for comp in item.components:
-            builtin = builtin_class(comp.type)
-            assert builtin is not None
-            with located_at(comp.location):
-                values = _builtin_values(comp, True, hooks.resolve)
-                if values:
-                    before = doc.revision
-                    doc.ensure_builtin(hooks.now(item.path), builtin, comp.key, values)
-                    added = f"add {comp.type} to {item.path}"
-                    if doc.revision != before and added not in edits:
-                        edits.append(f"update {comp.type} on {item.path}")
+            _ensure(doc, item, comp, declared.hooks, declared.edits, references=True)
+
+
+def _ensure(
+    doc: SceneDocument,
+    item: SceneObject,
+    comp: BuiltinComponent,
+    hooks: Hooks,
+    edits: list[str],
+    references: bool,
+) -> None:
+    """One built-in component with its plain values (or only its references): one line for
+    it, whichever pass adds or changes it."""
+    builtin = builtin_class(comp.type)
+    assert builtin is not None  # the manifest accepts only supported classes
+    with located_at(comp.location):
+        values = _builtin_values(comp, references, hooks.resolve)
+        if references and not values:
+            return
+        go = hooks.now(item.path)
+        existed = doc.find_builtin(go, builtin, comp.key) is not None
+        revision = doc.revision
+        doc.ensure_builtin(go, builtin, comp.key, values)
+    added, updated = f"add {comp.type} to {item.path}", f"update {comp.type} on {item.path}"
+    if not existed:
+        edits.append(added)
+    elif doc.revision != revision and added not in edits and updated not in edits:
+        edits.append(updated)

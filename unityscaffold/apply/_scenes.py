@@ -10,22 +10,26 @@ here; writing happens in ``apply.run``.
 
 from __future__ import annotations
 
+from unityscaffold.apply._attach import (
+    attach_connector,
+    attach_entries,
+    attach_generated,
+    set_references,
+)
 from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._context import SceneContext, component_script
 from unityscaffold.apply._editor import SceneEditor, ScenePlan
 from unityscaffold.apply._facts import ScriptFacts
 from unityscaffold.apply._identity import Moved, Named, moved_objects, now_at, report_moves
 from unityscaffold.apply._lock import LockFile
-from unityscaffold.apply._objects import Hooks, declare_objects
-from unityscaffold.apply._references import paths_in, typed_reference, untyped_value
-from unityscaffold.apply._rossharp import RosSharp
-from unityscaffold.apply._typed import check_names
-from unityscaffold.apply._wiring import (
-    catalog_values,
-    connector_fields,
-    hand_set_connector,
-    requirements,
+from unityscaffold.apply._objects import (
+    DeclaredObjects,
+    Hooks,
+    declare_objects,
+    set_builtin_references,
 )
+from unityscaffold.apply._references import paths_in, typed_reference
+from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
 from unityscaffold.manifest.model import (
     Action,
@@ -38,9 +42,7 @@ from unityscaffold.manifest.model import (
     Topic,
 )
 from unityscaffold.unity import (
-    ObjectRef,
     SceneDocument,
-    ScriptRef,
 )
 from unityscaffold.unity.project import ScriptInfo
 from unityscaffold.unity.values import FieldValue
@@ -114,7 +116,7 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
             ref = scripts[id(c)]
             slot = (editor.path(c.gameobject), ref.guid, ref.file_id)
             editor.keys.setdefault(slot, []).append(c.key)
-    _declare_objects(ctx, editor)
+    objects = _declare_objects(ctx, editor)
     needs_connector = [
         c
         for c in entries
@@ -123,120 +125,32 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
     connector_script = None
     if m.connector.scene == plan.relative or needs_connector:
         connector_script = ctx.rossharp.script("RosConnector")
-    connector_id = _attach_connector(ctx, editor, connector_script)
+    connector_id = attach_connector(ctx, editor, connector_script)
     # connectors apply attached itself may be pruned; one that is not came from the user
     owned_ids = {c.file_id for c in lock.components if c.scene == plan.relative}
-    _attach_generated(ctx, editor, connector_script, connector_id, owned_ids)
-    _attach_entries(ctx, editor, entries, scripts, needs_connector, connector_script)
+    attach_generated(ctx, editor, connector_script, connector_id, owned_ids)
+    pending = attach_entries(ctx, editor, entries, scripts, needs_connector, connector_script)
+    # References last, once every component of every kind is in the scene: a field may name
+    # one that a later entry or object adds.
+    if objects is not None:
+        set_builtin_references(editor.doc, objects)
+    set_references(ctx, editor, pending)
     editor.prune(lock.components, editor.wanted)
     _prune_gameobjects(plan, doc, lock)
 
 
-def _declare_objects(ctx: SceneContext, editor: SceneEditor) -> None:
-    """The manifest's ``objects:`` in this scene, created or kept as declared."""
+def _declare_objects(ctx: SceneContext, editor: SceneEditor) -> DeclaredObjects | None:
+    """The manifest's ``objects:`` in this scene, created or kept as declared (their built-in
+    components' references are left for ``set_builtin_references``)."""
     objects = [o for o in ctx.manifest.objects if o.scene == editor.plan.relative]
     if not objects:
-        return
+        return None
 
     def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
         return typed_reference(ctx, editor, path, declared, where)
 
     hooks = Hooks(editor.path, editor.record, resolve)
-    declare_objects(editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks)
-
-
-def _attach_connector(
-    ctx: SceneContext, editor: SceneEditor, connector_script: ScriptRef | None
-) -> int:
-    """The manifest's RosConnector, if it lives in this scene: its fileID, else 0."""
-    m = ctx.manifest
-    if m.connector.scene != editor.plan.relative:
-        return 0
-    assert connector_script is not None
-    where = m.connector.locations.of("gameobject")
-    return editor.attach(
-        m.connector.gameobject, True, connector_script, connector_fields(m), where, "connector"
-    ).file_id
-
-
-def _attach_generated(
-    ctx: SceneContext,
-    editor: SceneEditor,
-    connector_script: ScriptRef | None,
-    connector_id: int,
-    owned_ids: set[int],
-) -> None:
-    """The generated topic, service and action scripts of this scene."""
-    for script in ctx.code.scripts:
-        item = script.item
-        if item.scene != editor.plan.relative:
-            continue
-        if connector_id == 0:
-            editor.plan.edits.append(
-                f"note: {script.view.class_name}'s Connector stays empty (the "
-                "RosConnector is in another scene); it finds one at runtime"
-            )
-        ref = ScriptRef(
-            script.guid, class_name=script.view.class_name, namespace=script.view.namespace
-        )
-        chosen = hand_set_connector(editor.doc, item.gameobject, ref, connector_script, owned_ids)
-        fields: list[tuple[str, FieldValue]] = [
-            ("Connector", ObjectRef(chosen or connector_id)),
-            *script.view.serialized_fields(),
-        ]
-        where = item.locations.of("gameobject")
-        editor.attach(item.gameobject, item.create, ref, fields, where, script.entry)
-
-
-def _attach_entries(
-    ctx: SceneContext,
-    editor: SceneEditor,
-    entries: list[Component],
-    scripts: dict[int, ScriptRef],
-    needs_connector: list[Component],
-    connector_script: ScriptRef | None,
-) -> None:
-    """The manifest's ``components:`` of this scene; references are set in a second pass,
-    once every component is there, since a field may name one that a later entry attaches."""
-    deferred = []
-    for entry in entries:
-        ref = scripts[id(entry)]
-        facts = ctx.facts(ref)
-        where = entry.locations.of("gameobject")
-        # Created before the fields are read, so they may refer to it.
-        editor.gameobject(entry.gameobject, entry.create, where)
-        if facts is not None:
-            check_names(facts.class_name, facts.fields, entry.fields)
-        if entry in needs_connector and connector_script is not None:
-            # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
-            fields = connector_fields(ctx.manifest)
-            label = f"connector for {entry.script}"
-            editor.attach(entry.gameobject, entry.create, connector_script, fields, where, label)
-        if facts is None:
-            values = [
-                (f.name, untyped_value(ctx, editor, f.name, f.value, f.location))
-                for f in entry.fields
-            ]
-        else:
-            values = catalog_values(ctx, editor, facts, entry, references=False)
-            deferred.append((entry, ref, facts, where))
-        _attach_component(editor, entry, ref, values, where)
-    for entry, ref, facts, where in deferred:
-        values = catalog_values(ctx, editor, facts, entry, references=True)
-        _attach_component(editor, entry, ref, values, where)
-        requirements(editor, ctx, facts, entry)
-
-
-def _attach_component(
-    editor: SceneEditor,
-    entry: Component,
-    ref: ScriptRef,
-    values: list[tuple[str, FieldValue]],
-    where: SourceLocation,
-) -> None:
-    editor.attach(
-        entry.gameobject, entry.create, ref, values, where, f"component {entry.label}", entry.key
-    )
+    return declare_objects(editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks)
 
 
 def _prune_gameobjects(plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
