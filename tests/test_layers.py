@@ -7,8 +7,9 @@ Bottom up (a package may import from lower layers only, never from a peer or fro
 1. ``fileout`` (desired file → change → atomic write; every layer above writes through it)
    and ``resources`` (the package's templates and JSON Schema).
 2. ``interfaces`` (the ROS side) and ``unity`` (the Unity side); neither knows the other.
-3. ``manifest`` (its model names a ROS dialect; ``manifest.edit`` adds discovered interfaces)
-   and ``codegen`` (ROS types in, C# and ``.meta`` files for a Unity project out).
+3. ``manifest`` (its model names a ROS dialect; ``manifest.edit`` adds discovered interfaces),
+   ``codegen`` (ROS types in, C# and ``.meta`` files for a Unity project out) and ``urdf`` (a
+   robot's URDF in, what ROS#'s importer would build out).
 4. ``apply``: plans the whole project and writes it.
 5. ``cli``, then ``__main__``: the command line over all of it.
 
@@ -29,7 +30,7 @@ LAYERS: tuple[frozenset[str], ...] = (
     frozenset({"errors", "usercache", ""}),  # "": the package's own __init__
     frozenset({"fileout", "resources"}),
     frozenset({"interfaces", "unity"}),
-    frozenset({"manifest", "codegen"}),
+    frozenset({"manifest", "codegen", "urdf"}),
     frozenset({"apply"}),
     frozenset({"cli"}),
     frozenset({"__main__"}),
