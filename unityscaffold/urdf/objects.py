@@ -1,0 +1,196 @@
+"""The GameObjects ROS#'s importer builds for a robot: tree, names, order, components, poses.
+
+``importer_tree(robot)`` is the whole hierarchy as ROS# 2.2.1's editor importer creates it
+(``docs/architecture.md``, "The urdf stage"):
+
+    <robot name>                  UrdfRobot
+      Plugins                     UrdfPlugins, one UrdfPlugin per plugin element
+      <root link>                 UrdfLink (+ Rigidbody, UrdfInertial with an <inertial>)
+        Visuals                   UrdfVisuals                    (not editable: hide flags 8)
+          <visual name|unnamed>   UrdfVisual, posed by <origin>, scaled to the shape
+            Cube|Cylinder|Sphere  MeshFilter, MeshRenderer  |  <mesh file stem>: the model
+        Collisions                UrdfCollisions                 (not editable: hide flags 8)
+          unnamed                 UrdfCollision (a collision's name is not used)
+            Box|Cylinder|Sphere   BoxCollider | MeshCollider | SphereCollider  |  <mesh stem>
+        <child link>              … + the joint's components, posed by the joint's <origin>
+
+Child links follow Visuals and Collisions in the order of the ``<joint>`` elements naming
+their parent. A link gets its joint's components only when it has an ``<inertial>`` and its
+parent has one too (ROS# needs both Rigidbodies). Each object carries ``key``, the URDF
+element it comes from by position (``link[3]/visual[0]``), stable across renames of siblings.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from pathlib import PurePosixPath
+
+from unityscaffold.urdf import transforms as t
+from unityscaffold.urdf.model import (
+    Box,
+    Collision,
+    Cylinder,
+    Geometry,
+    Joint,
+    JointType,
+    Link,
+    Mesh,
+    Robot,
+    Sphere,
+    Vector3,
+    Visual,
+)
+
+__all__ = ["ImportedObject", "LocalTransform", "Role", "importer_tree"]
+
+
+class Role(enum.Enum):
+    ROBOT = "robot"
+    PLUGINS = "plugins"
+    LINK = "link"
+    VISUALS = "visuals"
+    COLLISIONS = "collisions"
+    VISUAL = "visual"
+    COLLISION = "collision"
+    SHAPE = "shape"  # a primitive or collider object made in the scene
+    MODEL = "model"  # an instance of the mesh file's model or prefab
+
+
+@dataclass(frozen=True, slots=True)
+class LocalTransform:
+    """A Transform's local values; the default is how ROS#'s ``SetParentAndAlign`` leaves an
+    object it does not move after (a negative-zero identity rotation)."""
+
+    position: Vector3 = (0.0, 0.0, 0.0)
+    rotation: t.Quaternion = t.ALIGNED
+    scale: Vector3 = (1.0, 1.0, 1.0)
+
+
+@dataclass(frozen=True, slots=True)
+class ImportedObject:
+    """One GameObject: ``components`` are class names after the Transform, in the order ROS#
+    adds them (empty for a model instance, whose components are the model's)."""
+
+    name: str
+    role: Role
+    key: str
+    transform: LocalTransform
+    components: tuple[str, ...]
+    children: tuple[ImportedObject, ...] = ()
+    not_editable: bool = False
+
+    def walk(self, depth: int = 0) -> list[tuple[int, ImportedObject]]:
+        """This object and everything under it, depth first, with their depths."""
+        found = [(depth, self)]
+        for child in self.children:
+            found += child.walk(depth + 1)
+        return found
+
+
+#: The components ROS# adds for each joint type, after the UrdfJoint script.
+JOINT_COMPONENTS: dict[JointType, tuple[str, ...]] = {
+    JointType.FIXED: ("UrdfJointFixed", "FixedJoint"),
+    JointType.CONTINUOUS: ("UrdfJointContinuous", "HingeJoint", "HingeJointAngleCalculator"),
+    JointType.REVOLUTE: (
+        "UrdfJointRevolute",
+        "HingeJoint",
+        "HingeJointLimitsManager",
+        "HingeJointAngleCalculator",
+    ),
+    JointType.PRISMATIC: ("UrdfJointPrismatic", "ConfigurableJoint", "PrismaticJointLimitsManager"),
+    JointType.FLOATING: ("UrdfJointFloating", "ConfigurableJoint"),
+    JointType.PLANAR: ("UrdfJointPlanar", "ConfigurableJoint"),
+}
+
+
+def importer_tree(robot: Robot) -> ImportedObject:
+    """The robot's GameObjects as ROS#'s importer creates them (``robot`` must be a tree, as
+    ``read_urdf`` guarantees)."""
+    plugins = ImportedObject(
+        "Plugins",
+        Role.PLUGINS,
+        "plugins",
+        LocalTransform(),
+        ("UrdfPlugins", *("UrdfPlugin" for _ in robot.plugins)),
+    )
+    root = _link(robot, robot.root, None, parent_has_body=False)
+    # a new GameObject, placed where the user's selection is: not ROS#'s alignment
+    placed = LocalTransform(rotation=t.IDENTITY)
+    return ImportedObject(robot.name, Role.ROBOT, "robot", placed, ("UrdfRobot",), (plugins, root))
+
+
+def _link(
+    robot: Robot, link: Link, joint: Joint | None, *, parent_has_body: bool
+) -> ImportedObject:
+    key = f"link[{robot.links.index(link)}]"
+    components = ["UrdfLink"]
+    if link.inertial is not None:
+        components += ["Rigidbody", "UrdfInertial"]
+        if joint is not None and parent_has_body:
+            components += JOINT_COMPONENTS[joint.type]
+    origin = None if joint is None else joint.origin
+    pose = LocalTransform(t.origin_position(origin), t.origin_rotation(origin))
+    visuals = ImportedObject(
+        "Visuals",
+        Role.VISUALS,
+        f"{key}/visuals",
+        LocalTransform(),
+        ("UrdfVisuals",),
+        tuple(_part(v, f"{key}/visual[{i}]") for i, v in enumerate(link.visuals)),
+        not_editable=True,
+    )
+    collisions = ImportedObject(
+        "Collisions",
+        Role.COLLISIONS,
+        f"{key}/collisions",
+        LocalTransform(),
+        ("UrdfCollisions",),
+        tuple(_part(c, f"{key}/collision[{i}]") for i, c in enumerate(link.collisions)),
+        not_editable=True,
+    )
+    children = tuple(
+        _link(robot, robot.link(j.child), j, parent_has_body=link.inertial is not None)
+        for j in robot.child_joints(link.name)
+    )
+    return ImportedObject(
+        link.name, Role.LINK, key, pose, tuple(components), (visuals, collisions, *children)
+    )
+
+
+def _part(part: Visual | Collision, key: str) -> ImportedObject:
+    visual = isinstance(part, Visual)
+    pose = LocalTransform(
+        t.origin_position(part.origin),
+        t.origin_rotation(part.origin),
+        t.geometry_scale(part.geometry),
+    )
+    return ImportedObject(
+        (part.name or "unnamed") if visual else "unnamed",
+        Role.VISUAL if visual else Role.COLLISION,
+        key,
+        pose,
+        ("UrdfVisual",) if visual else ("UrdfCollision",),
+        (_shape(part.geometry, f"{key}/shape", visual=visual),),
+    )
+
+
+_VISUAL_SHAPES = {Box: "Cube", Cylinder: "Cylinder", Sphere: "Sphere"}
+_COLLIDERS = {
+    Box: ("Box", "BoxCollider"),
+    Cylinder: ("Cylinder", "MeshCollider"),
+    Sphere: ("Sphere", "SphereCollider"),
+}
+
+
+def _shape(geometry: Geometry, key: str, *, visual: bool) -> ImportedObject:
+    if isinstance(geometry, Mesh):
+        stem = PurePosixPath(geometry.filename).stem
+        return ImportedObject(stem, Role.MODEL, key, LocalTransform(), ())
+    if visual:
+        name = _VISUAL_SHAPES[type(geometry)]
+        return ImportedObject(
+            name, Role.SHAPE, key, LocalTransform(), ("MeshFilter", "MeshRenderer")
+        )
+    name, collider = _COLLIDERS[type(geometry)]
+    return ImportedObject(name, Role.SHAPE, key, LocalTransform(), (collider,))
