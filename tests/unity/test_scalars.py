@@ -13,7 +13,8 @@ from hypothesis import strategies as st
 from ruamel.yaml import YAML
 
 from unityscaffold.unity._emit import emit_field, value_equals
-from unityscaffold.unity._scalars import format_float, format_string, to_float32
+from unityscaffold.unity._scalars import format_float, format_string, keep_fold_spaces, to_float32
+from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.unity.values import AssetRef, Enum, InlineMap, ObjectRef
 
 # Written by Unity itself (docs/unity-yaml.md#scalars and the corpus).
@@ -173,3 +174,75 @@ def test_spaces_around_line_breaks_survive(value: str) -> None:
     doc = "\n".join(emit_field("k", value, 2)) + "\n"
     for loaded in _readers(doc):
         assert loaded["k"] == value
+
+
+# A field as Unity 2022.3 saved it (ROS#'s UrdfPlugin.PluginText in ROS#'s r2d2 sample scene):
+# Unity folds a long double-quoted string at a space and keeps the spaces before each fold, so
+# the line ending "\r\n   " and the fold after it are four spaces of the text.
+UNITY_FOLDED = (
+    '  PluginText: "<gazebo>\\r\\n  <plugin filename=\\"gz-sim-diff-drive-system\\"\n'
+    '    name=\\"gz::sim::systems::DiffDrive\\">\\r\\n   \n'
+    "    <left_joint>left_front_wheel_joint</left_joint>\\r\\n \n"
+    '    </plugin>\\r\\n</gazebo>"\n'
+)
+UNITY_FOLDED_TEXT = (
+    '<gazebo>\r\n  <plugin filename="gz-sim-diff-drive-system" name="gz::sim::systems::DiffDrive">'
+    "\r\n    <left_joint>left_front_wheel_joint</left_joint>\r\n  </plugin>\r\n</gazebo>"
+)
+MONOBEHAVIOUR = (
+    """%YAML 1.1
+%TAG !u! tag:unity3d.com,2011:
+--- !u!1 &1
+GameObject:
+  m_ObjectHideFlags: 0
+  serializedVersion: 6
+  m_Component:
+  - component: {fileID: 2}
+  - component: {fileID: 3}
+  m_Layer: 0
+  m_Name: Plugins
+  m_IsActive: 1
+--- !u!4 &2
+Transform:
+  m_ObjectHideFlags: 0
+  m_GameObject: {fileID: 1}
+  m_LocalRotation: {x: 0, y: 0, z: 0, w: 1}
+  m_LocalPosition: {x: 0, y: 0, z: 0}
+  m_LocalScale: {x: 1, y: 1, z: 1}
+  m_Children: []
+  m_Father: {fileID: 0}
+--- !u!114 &3
+MonoBehaviour:
+  m_ObjectHideFlags: 0
+  m_GameObject: {fileID: 1}
+  m_Enabled: 1
+  m_Script: {fileID: 11500000, guid: 76add797bdb1d8c4b8276633f6e67167, type: 3}
+"""
+    + "  m_Name: \n"
+)
+
+
+def test_a_double_quoted_string_unity_folded_reads_with_the_spaces_before_each_fold() -> None:
+    scene = SceneDocument.parse(MONOBEHAVIOUR + UNITY_FOLDED)
+    assert scene.field(3, "PluginText") == UNITY_FOLDED_TEXT
+
+
+def test_a_string_unity_folded_equals_the_same_string_written_on_one_line() -> None:
+    """What ``apply`` relies on not to rewrite a field Unity refolded on save."""
+    scene = SceneDocument.parse(MONOBEHAVIOUR + UNITY_FOLDED)
+    assert scene.set_fields(3, [("PluginText", UNITY_FOLDED_TEXT)]) is False
+    assert not scene.changed
+
+
+@pytest.mark.parametrize(
+    ("folded", "text"),
+    [
+        ('  k: "a  \n    b"\n', "a   b"),  # two kept, one for the fold
+        ('  k: "a\\\\  \n    b"\n', "a\\   b"),  # an escaped backslash, then kept spaces
+        ('  k: "a\\  \n    b"\n', "a   b"),  # an escaped space, then a kept one
+        ('  k: "a\n    b"\n', "a b"),  # a fold at a single space
+        ('  k: "a\\\n    b"\n', "ab"),  # an escaped line break joins
+    ],
+)
+def test_spaces_before_a_fold_are_kept_next_to_escapes(folded: str, text: str) -> None:
+    assert yaml.load(keep_fold_spaces(folded), Loader=yaml.BaseLoader)["k"] == text

@@ -194,3 +194,19 @@ def _hide_flags(scene: SceneDocument, path: str) -> tuple[int, ...]:
         assert doc is not None
         flags.append(int(doc.text.split("m_ObjectHideFlags: ")[1].split("\n")[0]))
     return tuple(flags)
+
+
+def test_plugin_texts_are_the_ones_rossharp_stored_with_the_importing_machines_newlines(
+    r2d2_urdf: Path, r2d2_scene: Path
+) -> None:
+    """The tutorial was imported on Windows: ``XElement.ToString()`` wrote CRLF."""
+    scene = SceneDocument.load(r2d2_scene)
+    names = rossharp_catalog().all_class_names()
+    plugins = [
+        c
+        for c in scene.components_of(scene.find_gameobject("r2d2/Plugins"))
+        if component_label(c, names) == "UrdfPlugin"
+    ]
+    stored = [scene.field(c, "PluginText") for c in plugins]
+    ours = [p.text.replace("\n", "\r\n") for p in read_urdf(r2d2_urdf).plugins]
+    assert len(ours) == 4 and stored == ours

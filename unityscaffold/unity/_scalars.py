@@ -8,6 +8,7 @@ reader.
 from __future__ import annotations
 
 import math
+import re
 import struct
 
 __all__ = [
@@ -15,6 +16,7 @@ __all__ = [
     "PLAIN_EXPONENTS",
     "format_float",
     "format_string",
+    "keep_fold_spaces",
     "to_float32",
 ]
 
@@ -88,6 +90,27 @@ def _plain_notation(digits: str, exponent: int) -> str:
     if len(digits) <= whole:
         return digits + "0" * (whole - len(digits))
     return digits[:whole] + "." + digits[whole:]
+
+
+_FOLD_RE = re.compile(r"(\\*)( +)\n")
+_ESCAPED_SPACE = "\\x20"
+
+
+def keep_fold_spaces(text: str) -> str:
+    """A double-quoted scalar Unity folded over lines, made to read as Unity reads it.
+
+    Unity folds a long double-quoted string at a space and keeps the spaces before the fold:
+    ``"a\\n   ⏎    b"`` is ``a``, a newline and four spaces, then ``b``. YAML drops trailing
+    spaces before a line break, leaving one; written as ``\\x20`` escapes they are kept.
+    """
+
+    def escape(match: re.Match[str]) -> str:
+        slashes, spaces = match.group(1), match.group(2)
+        if len(slashes) % 2:  # the first space is already the escape "\\ "
+            return slashes + " " + _ESCAPED_SPACE * (len(spaces) - 1) + "\n"
+        return slashes + _ESCAPED_SPACE * len(spaces) + "\n"
+
+    return _FOLD_RE.sub(escape, text)
 
 
 def _needs_double_quotes(text: str) -> bool:
