@@ -43,6 +43,7 @@ __all__ = [
     "check_name_lengths",
     "name_too_long",
     "plan_files",
+    "real_path",
     "same_text",
     "temp_leftovers",
     "write_chunks_if_changed",
@@ -77,6 +78,22 @@ def check_name_lengths(paths: Iterable[Path]) -> None:
                 hint=f"file systems take names of at most {MAX_NAME_BYTES} bytes; "
                 "shorten the name in the manifest or the interface it comes from",
             )
+
+
+def real_path(path: Path) -> Path:
+    """``path`` absolute, with its symbolic links and ``..`` followed as the system follows them.
+
+    Paths are resolved once, through this, and compared as text after: a project reached through
+    a link and the same files reached by their real path must not count as two places. A link
+    that leads back into itself is the user's to fix, not an internal error.
+    """
+    try:
+        return path.resolve()
+    except (RuntimeError, OSError) as exc:  # RuntimeError: a link loop (Python < 3.13)
+        raise UserError(
+            f"cannot follow {path}: {exc}",
+            hint="a symbolic link on the way leads back to itself; replace it with a real folder",
+        ) from None
 
 
 class ChangeKind(enum.Enum):

@@ -17,14 +17,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from helpers import require
+from helpers import build_tree, require
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from ruamel.yaml import YAML
 
 from unityscaffold.errors import LocatedError, ScaffoldError, UserError
 from unityscaffold.interfaces.model import Dialect
-from unityscaffold.manifest import parse_manifest, starter_manifest
+from unityscaffold.manifest import load_manifest, parse_manifest, starter_manifest
 from unityscaffold.manifest.model import Manifest
 from unityscaffold.manifest.schema import load_schema
 
@@ -271,6 +271,62 @@ def test_one_mistake_in_a_well_formed_manifest_is_refused_at_its_line(
     assert isinstance(outcome, LocatedError), f"accepted with {key}: {value!r}:\n{text}"
     lines = [d.location.source_line or "" for d in outcome.diagnostics]
     assert any(line.lstrip(" -").startswith(f"{key}:") for line in lines), outcome.render()
+
+
+# --- paths through symbolic links ------------------------------------------------------------
+
+# Folders of a project on disk (tmp/p) beside a folder outside it, with links of every kind:
+# to the project, inside it, out of it, to nowhere, and to themselves.
+LINKS = {
+    "u": "p",
+    "p/Assets/In": "p/Assets/Real",
+    "p/Assets/Out": "outside",
+    "p/Assets/Dangling": "nowhere",
+    "p/Assets/Loop": "p/Assets/Loop",
+    "loop": "loop",
+}
+PROJECTS = [".", "p", "u", "u/", "u/..", "u/Assets/..", "p/Assets/In/../..", "loop", "nowhere"]
+INSIDE = [
+    "Assets/Gen", "Assets/In", "Assets/In/Gen", "Assets/Out", "Assets/Out/Gen", "Assets/Dangling",
+    "Assets/Loop", "Assets/Loop/x", "Assets/In/..", "Assets/In/../Gen", "Assets/Out/../Gen",
+]  # fmt: skip
+
+
+@pytest.fixture(scope="module")
+def linked(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    root = tmp_path_factory.mktemp("linked")
+    for folder in ("p/Assets/Real", "p/ProjectSettings", "outside"):
+        (root / folder).mkdir(parents=True)
+    for link, target in LINKS.items():
+        (root / link).symlink_to(root / target, target_is_directory=True)
+    return root
+
+
+@FUZZ
+@given(
+    project=st.sampled_from(PROJECTS),
+    output=st.sampled_from(INSIDE),
+    scene=st.sampled_from(INSIDE),
+    script=st.sampled_from(INSIDE),
+)
+def test_paths_through_links_are_accepted_inside_the_project_or_refused_cleanly(
+    linked: Path, project: str, output: str, scene: str, script: str
+) -> None:
+    text = (
+        f"version: 1\nros: 2\nproject: {project}\noutput: {output}\nscene: {scene}/S.unity\n"
+        f"components:\n  - {{script: {script}/A.cs, gameobject: G}}\n"
+    )
+    try:
+        manifest = load_manifest(build_tree(linked, {"robot.yaml": text}) / "robot.yaml")
+    except ScaffoldError as error:
+        assert isinstance(error, LocatedError), f"not a located user error: {error!r}"
+        assert all(d.location.line >= 1 for d in error.diagnostics), error.render()
+        return
+    root = manifest.project_root
+    assert root == root.resolve(), "the project root is not its real path"
+    for inside in (manifest.output_dir, manifest.scene_path(manifest.scenes[0])):
+        assert inside.is_relative_to(root)
+        assert inside.resolve().is_relative_to(root.resolve()), f"{inside} leaves {root}"
 
 
 def test_deep_nesting_and_alias_bombs_are_user_errors() -> None:

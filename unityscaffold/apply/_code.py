@@ -327,7 +327,7 @@ def plan_code(
     scripts_dir = manifest.output_dir / "Scripts"
     generated: list[DesiredFile] = []
     created_once: list[DesiredFile] = []
-    for file in output_files(messages, messages_dir):
+    for file in output_files(messages, messages_dir, project=manifest.project_root):
         (created_once if file.create_only else generated).append(file)
     planned: list[PlannedScript] = []
     known = {info.path: guid for guid, info in scripts.items()}

@@ -12,19 +12,20 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from unityscaffold.errors import UserError
+from unityscaffold.fileout import real_path
 
 __all__ = ["check_inside"]
 
 
 def check_inside(project: Path, paths: Iterable[Path]) -> None:
     """Refuse any write or deletion whose folder resolves outside ``project``."""
-    root = project.resolve()
+    root = real_path(project)
     inside = str(root).rstrip(os.sep) + os.sep
     resolved: dict[Path, str] = {}
     for path in paths:
         folder = resolved.get(path.parent)
         if folder is None:
-            folder = resolved[path.parent] = str(path.parent.resolve())
+            folder = resolved[path.parent] = str(real_path(path.parent))
         if not (folder + os.sep).startswith(inside):
             real = Path(folder) / path.name
             raise UserError(

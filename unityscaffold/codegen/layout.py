@@ -12,7 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from unityscaffold.codegen.generate import GeneratedCode
-from unityscaffold.fileout import DesiredFile
+from unityscaffold.fileout import DesiredFile, real_path
 from unityscaffold.unity.meta import folder_meta, guid_for, monoscript_meta
 from unityscaffold.unity.project import FALLBACK_SALT, find_project_root, project_salt
 
@@ -28,10 +28,20 @@ def _base_and_salt(out_dir: Path) -> tuple[Path, str, bool]:
     return out_dir.parent, FALLBACK_SALT, False
 
 
-def output_files(code: GeneratedCode, out_dir: Path) -> list[DesiredFile]:
-    """Every file ``code`` puts under ``out_dir``: sources (UTF-8, LF) and metas."""
-    out_dir = out_dir.resolve()
-    base, salt, in_project = _base_and_salt(out_dir)
+def output_files(
+    code: GeneratedCode, out_dir: Path, *, project: Path | None = None
+) -> list[DesiredFile]:
+    """Every file ``code`` puts under ``out_dir``: sources (UTF-8, LF) and metas.
+
+    ``project`` is the Unity project's real path when the caller knows it (apply): ``out_dir``
+    is then a path inside it, taken as written, so that its files have the same paths as the
+    rest of the plan's. Else ``out_dir`` is resolved and its project looked for above it.
+    """
+    if project is not None:
+        base, salt, in_project = project, project_salt(project), True
+    else:
+        out_dir = real_path(out_dir)
+        base, salt, in_project = _base_and_salt(out_dir)
     # Asset paths are strings joined onto the output folder's: a pathlib call per file and
     # folder was a tenth of generating Debian's 183 types.
     out_asset = out_dir.relative_to(base).as_posix()

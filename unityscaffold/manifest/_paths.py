@@ -12,7 +12,8 @@ import posixpath
 import re
 from pathlib import Path, PurePosixPath
 
-from unityscaffold.fileout import MAX_NAME_BYTES, name_too_long
+from unityscaffold.errors import UserError
+from unityscaffold.fileout import MAX_NAME_BYTES, name_too_long, real_path
 from unityscaffold.manifest._read import Reader
 from unityscaffold.manifest._yaml import YEntry
 
@@ -87,8 +88,11 @@ def project_path(
         return None
     base = project_root / under if under else project_root
     if project_root.is_dir():
-        real = (project_root / norm).resolve()
-        real_base = base.resolve()
+        try:
+            real, real_base = real_path(project_root / norm), real_path(base)
+        except UserError as error:
+            reader.invalid(entry, expected, hint=error.message)
+            return None
         if real != real_base and not real.is_relative_to(real_base):
             reader.invalid(
                 entry,
@@ -104,7 +108,8 @@ def project_path(
 def folder_path(
     reader: Reader, entry: YEntry, value: str, base: Path, *, allow_absolute: bool
 ) -> Path | None:
-    """A folder written relative to the manifest (``project``, ``interfaces``), made absolute."""
+    """A folder written relative to the manifest (``project``, ``interfaces``), as its real path
+    (symbolic links followed once, here, so that every path derived from it agrees)."""
     if not _portable(reader, entry, value):
         return None
     if _is_absolute(value) and not allow_absolute:
@@ -115,4 +120,9 @@ def folder_path(
             "would not work on another machine",
         )
         return None
-    return Path(posixpath.normpath((base / value).as_posix()))
+    try:
+        # resolved, not normalised as text: 'link/..' is where the link's target's parent is
+        return real_path(base / value)
+    except UserError as error:
+        reader.invalid(entry, "a folder relative to the manifest's folder", hint=error.message)
+        return None

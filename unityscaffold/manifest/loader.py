@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from unityscaffold.errors import Diagnostic, DiagnosticSink, LocatedError, SourceLocation, UserError
+from unityscaffold.fileout import real_path
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._checks import check_across
@@ -165,8 +166,8 @@ def _project_root(r: Reader, top: YMap, base: Path) -> Path:
     entry = top.get("project")
     value = r.text(top, "project", "a folder relative to the manifest")
     if entry is None or value is None:
-        return base
-    return folder_path(r, entry, value, base, allow_absolute=False) or base
+        return real_path(base)
+    return folder_path(r, entry, value, base, allow_absolute=False) or real_path(base)
 
 
 def _output(r: Reader, top: YMap, project_root: Path) -> Path:

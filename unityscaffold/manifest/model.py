@@ -292,8 +292,9 @@ class SceneObject:
 class Manifest:
     """A validated manifest with every path absolute and every default applied.
 
-    ``path`` is the manifest file, ``project_root`` the Unity project, ``output_dir`` the folder
-    for generated code (inside ``Assets/``); ``interfaces`` are absolute folders in the order
+    ``path`` is the manifest file, ``project_root`` the Unity project (its real path: links are
+    followed once, when loading, so that paths below it compare as text), ``output_dir`` the
+    folder for generated code (inside ``Assets/``); ``interfaces`` are real folders in the order
     written. ``namespace`` is None when the codegen default applies.
     """
 

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.errors import UserError
+from unityscaffold.fileout import real_path
 from unityscaffold.unity.meta import read_meta_guid
 from unityscaffold.unity.values import ScriptRef
 
@@ -43,7 +44,7 @@ class ScriptInfo:
 
 def find_project_root(path: str | Path) -> Path | None:
     """The nearest ancestor of ``path`` (or itself) holding ``Assets/`` and ``ProjectSettings/``."""
-    current = Path(path).resolve()
+    current = real_path(Path(path))
     for candidate in (current, *current.parents):
         if (candidate / "Assets").is_dir() and (candidate / "ProjectSettings").is_dir():
             return candidate
