@@ -89,10 +89,12 @@ def real_path(path: Path) -> Path:
     """
     try:
         return path.resolve()
-    except (RuntimeError, OSError) as exc:  # RuntimeError: a link loop (Python < 3.13)
+    # RuntimeError: a link loop (Python < 3.13); ValueError: a name the system cannot encode
+    except (RuntimeError, OSError, ValueError) as exc:
         raise UserError(
             f"cannot follow {path}: {exc}",
-            hint="a symbolic link on the way leads back to itself; replace it with a real folder",
+            hint="write a folder that exists, with no symbolic link on the way that leads back "
+            "to itself",
         ) from None
 
 

@@ -329,6 +329,13 @@ def test_paths_through_links_are_accepted_inside_the_project_or_refused_cleanly(
         assert inside.resolve().is_relative_to(root.resolve()), f"{inside} leaves {root}"
 
 
+def test_a_project_folder_the_system_cannot_name_is_refused_at_its_line() -> None:
+    # Found by the fuzz test above once the project folder was resolved: a lone surrogate.
+    outcome = _check('{"version": 1, "ros": 2, "project": "\\ud800"}', None)
+    assert isinstance(outcome, LocatedError)
+    assert any(d.message.startswith("invalid value for 'project'") for d in outcome.diagnostics)
+
+
 def test_deep_nesting_and_alias_bombs_are_user_errors() -> None:
     for text in [
         "[" * 1100,
