@@ -24,7 +24,7 @@ import jinja2
 from jinja2.bccache import Bucket, FileSystemBytecodeCache
 
 from unityscaffold import __version__
-from unityscaffold.usercache import cache_root
+from unityscaffold.usercache import cache_root, template_cache_folder
 
 __all__ = ["rossharp_catalog_text", "schema_text", "template_environment", "template_folder"]
 
@@ -47,7 +47,7 @@ class _UserCache(FileSystemBytecodeCache):
 
 def _cache_folder() -> Path | None:
     root = cache_root()
-    return Path(root) / f"{__version__}-templates" if root else None
+    return Path(template_cache_folder(root, __version__)) if root else None
 
 
 @cache

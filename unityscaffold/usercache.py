@@ -5,13 +5,16 @@ Nothing kept there is ever needed: a missing, unreadable or unwritable folder on
 command does the work again. ``UNITYSCAFFOLD_NO_CACHE`` (any non-empty value) turns every use
 of it off. Kept free of imports beyond the standard library's ``os``: the CLI asks for it
 before anything else is loaded.
+
+Each use has a folder of its own there, named here so that the no-op record knows which files
+in the cache are the scaffold's own rather than inputs.
 """
 
 from __future__ import annotations
 
 import os
 
-__all__ = ["cache_root"]
+__all__ = ["cache_root", "record_cache_folder", "template_cache_folder"]
 
 
 def cache_root() -> str | None:
@@ -29,3 +32,13 @@ def cache_root() -> str | None:
     if not os.path.isabs(base):
         return None
     return os.path.join(base, "unityscaffold")
+
+
+def template_cache_folder(root: str, version: str) -> str:
+    """Where jinja keeps the compiled templates of ``version`` of the scaffold."""
+    return os.path.join(root, f"{version}-templates")
+
+
+def record_cache_folder(root: str) -> str:
+    """Where the no-op record keeps its records (``cli/_noop.py``)."""
+    return os.path.join(root, "noop")

@@ -1,5 +1,15 @@
 """The recording half of the no-op record (see ``_noop``): observes a command as it runs and,
-if it verified a no-op, writes what it printed and the ``stat`` of every path it depended on.
+if it verified a no-op, writes what it printed and what it learnt from every path it looked at.
+
+Each path is looked at (hashed, listed, probed) when the program first looks at it, and again
+when the run ends: a path that changed in between leaves no record, as the run may have seen
+either state. A run is recorded only if:
+
+- the command said it verified a no-op (``verified``) and exited 0;
+- nothing was written, removed or renamed but the scaffold's own cache files and Python's
+  bytecode, and no other process or network connection was asked anything;
+- it read no device or pipe (whose bytes cannot be compared later);
+- nothing it looked at changed while it ran.
 
 Imported only when a command runs (not for a replay); standard library only.
 """
@@ -10,23 +20,27 @@ import io
 import marshal
 import os
 import sys
-import time
+from stat import S_IFDIR, S_IFREG
 
+from unityscaffold import __version__
 from unityscaffold.cli._noop import (
     _COMMANDS,
+    _LIST,
     _LSTAT,
-    _SHAPE,
+    _MAGIC,
+    _READ,
     _STAT,
+    _checksum,
     _command,
     _disabled,
     _isatty,
     _key,
-    _probe,
+    _look,
     _real_lstat,
     _real_stat,
     _record_path,
 )
-from unityscaffold.usercache import cache_root
+from unityscaffold.usercache import cache_root, record_cache_folder, template_cache_folder
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -70,10 +84,9 @@ _ELSEWHERE = (
     "os.kill",
 )
 
-_WATCHED = frozenset({"open", "os.scandir", "os.listdir", *_WRITE_EVENTS})
+_WATCHED = frozenset({"open", "exec", "os.scandir", "os.listdir", *_WRITE_EVENTS})
 
 _real_access = os.access
-_real_realpath = os.path.realpath
 _active: Recorder | None = None
 _hooked = False
 
@@ -159,15 +172,16 @@ class Recorder:
     def __init__(self, root: str, argv: list[str]) -> None:
         self.root = root
         self.key = _key(argv)
-        self.start_ns = time.time_ns()
-        self.paths: dict[tuple[str, int], tuple[int, ...]] = {}
-        self.folders: set[str] = set()
+        self.records = record_cache_folder(root)
+        self.templates = template_cache_folder(root, __version__)
+        self.looks: dict[tuple[str, int], tuple[Any, ...]] = {}
         self.output: list[tuple[int, bytes]] = []
         self.tainted = False
         self.verified = False
-        self.resolving = 0
+        self.looking = False  # the recorder's own opens and listings are not the program's
         self.streams = (sys.stdout, sys.stderr)
         self.pycache = sys.pycache_prefix
+        self.stdlib = os.path.dirname(os.__file__)
 
     @classmethod
     def start(cls, argv: list[str]) -> Recorder | None:
@@ -183,6 +197,7 @@ class Recorder:
             recorder = cls(root, argv)
         except (OSError, ValueError, TypeError):  # a deleted current folder, odd streams
             return None
+        recorder._code()  # what is already running: this package's first modules
         if not _hooked:
             sys.addaudithook(_hook)
             _hooked = True
@@ -192,46 +207,60 @@ class Recorder:
         sys.stderr = _wrap(recorder.streams[1], 2, recorder.output)
         os.stat = recorder.stat
         os.lstat = recorder.lstat
-        os.path.realpath = recorder.realpath  # type: ignore[assignment]
         os.access = recorder.access
         _active = recorder
         return recorder
 
-    def _ours(self, path: str) -> bool:
-        """Paths that are not inputs: the cache folder and Python's bytecode."""
-        if _encloses(self.root, path):
-            return True
-        if self.pycache and path.startswith(self.pycache + os.sep):
-            return True
-        folder, name = os.path.split(path)
-        if name == "__pycache__":
-            return True  # made by the import system to write bytecode into
+    def _own(self, path: str) -> bool:
+        """Files that are not inputs but caches of the scaffold's or Python's own making: the
+        records, compiled templates and bytecode. Each is checked against what it was made from
+        (the key; the template's source and Python's version; the module's source, all of
+        which are looked at), so a file, never a folder, is left out: a project kept under a
+        cache folder is observed like any other."""
+        folder, name = os.path.split(os.path.abspath(path))
+        if folder == self.records:
+            return name.endswith((".rec", ".tmp"))
+        if folder == self.templates:
+            return ".jinja-cache" in name  # an entry, or jinja's temporary file for one
         # a module's bytecode, or the temporary file the import system writes it to
-        return os.path.basename(folder) == "__pycache__" and (
-            name.endswith(".pyc") or ".pyc." in name
+        bytecode = name.endswith(".pyc") or ".pyc." in name
+        return bytecode and (
+            os.path.basename(folder) == "__pycache__"
+            or bool(self.pycache and _encloses(self.pycache, folder))
+        )
+
+    def _made(self, path: str) -> bool:
+        """Folders the import system or a cache makes for the files above (or their parents)."""
+        path = os.path.abspath(path)
+        return (
+            os.path.basename(path) == "__pycache__"
+            or bool(self.pycache and _encloses(self.pycache, path))
+            or any(_encloses(path, folder) for folder in (self.records, self.templates))
         )
 
     def _seen(self, target: Any, how: int) -> None:
         if isinstance(target, int):
             return  # a file descriptor: its path was seen when it was opened
         path = os.fsdecode(os.fspath(target))
-        if (path, how) not in self.paths and not self._ours(path):
-            self.paths[(path, how)] = _probe(path, how)
+        if (path, how) not in self.looks and not self._own(path):
+            self.looks[(path, how)] = self._look(path, how)
+
+    def _look(self, path: str, how: int) -> tuple[Any, ...]:
+        self.looking = True
+        try:
+            facts = _look(path, how)
+        finally:
+            self.looking = False
+        if how == _READ and facts[0] not in (S_IFREG, S_IFDIR) and facts[0] >= 0:
+            self.tainted = True  # a device or a pipe: what it gave cannot be compared later
+        return facts
 
     def stat(self, path: Any, *, dir_fd: Any = None, follow_symlinks: bool = True) -> Any:
         if dir_fd is not None:
             self.tainted = True  # relative to a folder descriptor: not a path to compare
         else:
-            how = _STAT if follow_symlinks else _SHAPE if self.resolving else _LSTAT
-            self._seen(path, how)
+            self._seen(path, _STAT if follow_symlinks else _LSTAT)
         return _real_stat(path, dir_fd=dir_fd, follow_symlinks=follow_symlinks)
-
-    def realpath(self, path: Any, *args: Any, **kwargs: Any) -> Any:
-        self.resolving += 1
-        try:
-            return _real_realpath(path, *args, **kwargs)
-        finally:
-            self.resolving -= 1
 
     def lstat(self, path: Any, *, dir_fd: Any = None) -> Any:
         return self.stat(path, dir_fd=dir_fd, follow_symlinks=False)
@@ -245,42 +274,68 @@ class Recorder:
         return _real_access(path, mode, **kwargs)
 
     def event(self, event: str, args: tuple[Any, ...]) -> None:
+        if self.looking:
+            return
         if event == "open":
-            target, mode, flags = args
-            if isinstance(target, int):
-                return
-            path = os.fsdecode(os.fspath(target))
-            writes = any(c in mode for c in "wax+") if isinstance(mode, str) else False
-            if writes or (mode is None and flags & _WRITE_FLAGS):
-                if not self._ours(path):
-                    self.tainted = True
-                return
-            self._seen(path, _STAT)
+            self._opened(*args)
+        elif event == "exec":
+            # a module's code (or a compiled template's) about to run: its source as it is now
+            # (bytecode is read with no event of its own, and without its source being opened)
+            source = getattr(args[0], "co_filename", "")
+            if isinstance(source, str) and source[:1] not in ("", "<") and not self._stdlib(source):
+                self._seen(source, _READ)
         elif event in ("os.scandir", "os.listdir"):
-            target = args[0]
-            if target is None:
-                target = "."
+            target = "." if args[0] is None else args[0]
             if isinstance(target, int):
                 self.tainted = True
-                return
-            path = os.fsdecode(os.fspath(target))
-            if not self._ours(path):
-                self._seen(path, _STAT)
-                self.folders.add(path)
+            else:
+                self._seen(target, _LIST)
         elif event in _WRITE_EVENTS:
             first = args[0] if args else None
             named = os.fsdecode(first) if isinstance(first, (str, bytes, os.PathLike)) else None
-            # the cache folder's own parents are made with it
-            making = event == "os.mkdir" and named is not None and _encloses(named, self.root)
-            if named is None or not (self._ours(named) or making):
+            making = event == "os.mkdir" and named is not None and self._made(named)
+            if named is None or not (making or self._own(named)):
                 self.tainted = True
+
+    def _opened(self, target: Any, mode: Any, flags: int) -> None:
+        if isinstance(target, int):
+            return
+        writes = any(c in mode for c in "wax+") if isinstance(mode, str) else False
+        if writes or (mode is None and flags & _WRITE_FLAGS):
+            path = os.fsdecode(os.fspath(target))
+            # jinja writes an entry through tempfile, which names the folder to open and makes
+            # the file in it with an opener
+            if not (self._own(path) or os.path.abspath(path) == self.templates):
+                self.tainted = True
+        else:
+            self._seen(target, _READ)
+
+    def _stdlib(self, source: str) -> bool:
+        """Whether ``source`` is the interpreter's own (its version is in the key)."""
+        folder = self.stdlib + os.sep
+        if not source.startswith(folder):
+            return False
+        return source[len(folder) :].partition(os.sep)[0] not in ("site-packages", "dist-packages")
+
+    def _code(self) -> None:
+        """The code itself: unityscaffold and its dependencies (the standard library is the
+        interpreter's, whose version is in the key), and the folders imports search (a module
+        added to one may be found before the one this run imported)."""
+        stdlib = sys.stdlib_module_names
+        for name, module in list(sys.modules.items()):
+            source = getattr(module, "__file__", None)
+            if isinstance(source, str) and name.partition(".")[0] not in stdlib:
+                self._seen(source, _READ)
+        for entry in sys.path:
+            if isinstance(entry, str):  # a folder, or a zip file imports read as one
+                folder = entry or "."
+                self._seen(folder, _LIST if os.path.isdir(folder) else _READ)
 
     def _stop(self) -> None:
         global _active
         _active = None
         os.stat = _real_stat
         os.lstat = _real_lstat
-        os.path.realpath = _real_realpath
         os.access = _real_access
         for wrapper in (sys.stdout, sys.stderr):
             try:
@@ -294,55 +349,18 @@ class Recorder:
         self._stop()
         if self.tainted or not self.verified or status != 0:
             return
-        try:
-            paths = self._settled()
-        except OSError:
+        # Looked at again: one that changed while the run went on may have been seen by it in
+        # either state (git's index guards against the same with its racy timestamps).
+        if any(self._look(path, how) != facts for (path, how), facts in list(self.looks.items())):
             return
-        if paths is not None:
-            self._write(paths, status)
+        self._code()  # modules imported without running code of theirs (extensions)
+        if not self.tainted:
+            self._write(sorted((path, how, facts) for (path, how), facts in self.looks.items()))
 
-    def _settled(self) -> list[tuple[str, int, tuple[int, ...]]] | None:
-        """Every path with its facts as first seen, unless one of them is racy.
-
-        A path changed after it was first seen is recorded as it was then, so the record
-        will not match it: it is not compared again here.
-        """
-        paths = dict(self.paths)
-        # The code itself: unityscaffold and its dependencies (the standard library is the
-        # interpreter's, whose version is in the key).
-        stdlib = sys.stdlib_module_names
-        for name, module in list(sys.modules.items()):
-            source = getattr(module, "__file__", None)
-            if not isinstance(source, str) or name.partition(".")[0] in stdlib:
-                continue
-            if (source, _STAT) not in paths:
-                paths[(source, _STAT)] = _probe(source, _STAT)
-        # The folders imports search: a module added to one may be found before the one this
-        # run imported. The import system lists them through its own stat, which is not seen.
-        for folder in sys.path:
-            if isinstance(folder, str) and (folder or ".", _STAT) not in paths:
-                paths[(folder or ".", _STAT)] = _probe(folder or ".", _STAT)
-        # A symlink in a listed folder: os.walk asked whether its target is a folder.
-        for folder in sorted(self.folders):
-            if len(paths[(folder, _STAT)]) == 1:
-                continue  # absent, and recorded so
-            with os.scandir(folder) as entries:
-                for entry in entries:
-                    if entry.is_symlink() and (entry.path, _STAT) not in paths:
-                        paths[(entry.path, _STAT)] = _probe(entry.path, _STAT)
-        # Timestamps of a file changed after the run started are at most one clock tick
-        # (~10 ms; 2 s where the file system keeps whole seconds) older than the change. Judged
-        # per path: a project on such a file system may sit beside code on a finer one.
-        for facts in paths.values():
-            if len(facts) == 6:
-                coarse = facts[2] % 1_000_000_000 == 0 and facts[3] % 1_000_000_000 == 0
-                margin = 2_050_000_000 if coarse else 50_000_000
-                if max(facts[2], facts[3]) >= self.start_ns - margin:
-                    return None
-        return [(path, how, facts) for (path, how), facts in sorted(paths.items())]
-
-    def _write(self, paths: list[tuple[str, int, tuple[int, ...]]], status: int) -> None:
-        record = (self.key, status, self.output, paths)
+    def _write(self, looks: list[tuple[str, int, tuple[Any, ...]]]) -> None:
+        # cheapest first, so a replay that will plan finds out early
+        looks.sort(key=lambda look: look[1])
+        data = _encode((self.key, self.output, looks))
         target = _record_path(self.root, self.key)
         folder = os.path.dirname(target)
         temp = f"{target}.{os.getpid()}.tmp"
@@ -352,15 +370,21 @@ class Recorder:
             _unlink(temp)  # a dead process's, whose mode is not ours to trust
             handle = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
             try:
-                data = memoryview(marshal.dumps(record))
-                while data:
-                    data = data[os.write(handle, data) :]
+                view = memoryview(data)
+                while view:
+                    view = view[os.write(handle, view) :]
             finally:
                 os.close(handle)
             os.replace(temp, target)
             _prune(folder)
         except OSError:
             _unlink(temp)
+
+
+def _encode(record: tuple[Any, ...]) -> bytes:
+    """A record's file: a checksum of the rest, then the format's mark and the record."""
+    body = _MAGIC + marshal.dumps(record)
+    return _checksum(body) + body
 
 
 def _encloses(folder: str, path: str) -> bool:
