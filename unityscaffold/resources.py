@@ -1,4 +1,5 @@
-"""The package's data files: the jinja2 templates, the manifest's JSON Schema, ROS#'s catalog.
+"""The package's data files: the jinja2 templates, the manifest's JSON Schema, ROS#'s catalog,
+uGUI's fields.
 
 They live inside the package (``unityscaffold/templates/``, ``unityscaffold/schema/``), so a
 source checkout, an editable install and a wheel all read them the same way: templates through
@@ -26,7 +27,13 @@ from jinja2.bccache import Bucket, FileSystemBytecodeCache
 from unityscaffold import __version__
 from unityscaffold.usercache import cache_root, template_cache_folder
 
-__all__ = ["rossharp_catalog_text", "schema_text", "template_environment", "template_folder"]
+__all__ = [
+    "rossharp_catalog_text",
+    "schema_text",
+    "template_environment",
+    "template_folder",
+    "ugui_fields_text",
+]
 
 _PACKAGE = "unityscaffold"
 _TEMPLATES = "templates"
@@ -102,3 +109,8 @@ def schema_text() -> str:
 def rossharp_catalog_text() -> str:
     """The shipped ``rossharp_catalog.json`` (``scripts/update_rossharp_catalog.py`` writes it)."""
     return (files(_PACKAGE) / "unity" / "rossharp_catalog.json").read_text(encoding="utf-8")
+
+
+def ugui_fields_text() -> str:
+    """The shipped ``ugui_fields.json`` (``scripts/update_ugui_fields.py`` writes it)."""
+    return (files(_PACKAGE) / "unity" / "ugui_fields.json").read_text(encoding="utf-8")

@@ -8,6 +8,7 @@ the scene. The editor says one line per component however many passes touch it.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from unityscaffold.apply._context import SceneContext
@@ -24,7 +25,7 @@ from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest.model import Component
 from unityscaffold.unity import ObjectRef, ScriptRef
 from unityscaffold.unity.catalog import CatalogScript
-from unityscaffold.unity.values import FieldValue
+from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["Pending", "attach_connector", "attach_entries", "attach_generated", "set_references"]
 
@@ -106,7 +107,8 @@ def attach_entries(
             label = f"connector for {entry.script}"
             editor.attach(entry.gameobject, entry.create, connector_script, fields, where, label)
         item = Pending(entry, ref, facts, where)
-        _attach(editor, item, _values(ctx, editor, item, references=False))
+        # a new component gets every field its script serializes; the second pass finds it
+        _attach(editor, item, _values(ctx, editor, item, references=False), ctx.defaults(ref))
         pending.append(item)
     return pending
 
@@ -132,7 +134,12 @@ def _values(
     ]
 
 
-def _attach(editor: SceneEditor, item: Pending, values: list[tuple[str, FieldValue]]) -> None:
+def _attach(
+    editor: SceneEditor,
+    item: Pending,
+    values: list[tuple[str, FieldValue]],
+    defaults: Sequence[tuple[str, FieldValue | Verbatim]] = (),
+) -> None:
     entry = item.entry
     editor.attach(
         entry.gameobject,
@@ -142,4 +149,5 @@ def _attach(editor: SceneEditor, item: Pending, values: list[tuple[str, FieldVal
         item.where,
         f"component {entry.label}",
         entry.key,
+        defaults,
     )

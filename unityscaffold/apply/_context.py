@@ -15,6 +15,7 @@ from unityscaffold.unity import ScriptRef
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
 from unityscaffold.unity.ugui import UGUI_SCRIPTS, ugui_class, ugui_script
+from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["SceneContext", "component_script"]
 
@@ -50,6 +51,12 @@ class SceneContext:
         if any(s.guid == script.guid for s in self.code.scripts):
             return None  # apply writes a generated script's fields itself
         return self.known.of(script.guid)
+
+    def defaults(self, script: ScriptRef) -> tuple[tuple[str, FieldValue | Verbatim], ...]:
+        """Every field a new component of ``script`` is written with (see ``ScriptFacts``)."""
+        if any(s.guid == script.guid for s in self.code.scripts):
+            return ()
+        return self.known.defaults(script.guid)
 
 
 def component_script(ctx: SceneContext, item: Component) -> ScriptRef:

@@ -7,7 +7,7 @@ GameObjects apply made or adopted are known by fileID (see ``_identity``).
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -21,7 +21,7 @@ from unityscaffold.unity import (
     SceneDocument,
     ScriptRef,
 )
-from unityscaffold.unity.values import FieldValue
+from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["SceneEditor", "ScenePlan"]
 
@@ -131,6 +131,7 @@ class SceneEditor:
         where: SourceLocation,
         entry: str,
         key: str | None = None,
+        defaults: Sequence[tuple[str, FieldValue | Verbatim]] = (),
     ) -> SceneComponent:
         go = self.gameobject(path, create, where)
         path = go.path
@@ -148,7 +149,7 @@ class SceneEditor:
             existed = existed or adopt is not None
         revision = self.doc.revision
         with located_at(where):
-            component = self.doc.ensure_component(go, script, fields, key, adopt)
+            component = self.doc.ensure_component(go, script, fields, key, adopt, defaults)
         self.attached.add(component.file_id)
         if adopt is not None and key is not None:
             self.adopted[(path, script.guid, script.file_id, key)] = adopt.file_id

@@ -1,6 +1,6 @@
 """What each script a manifest names declares, wherever it comes from: ROS#'s from the catalog,
-the project's own from their ``.cs`` (read once per run), generated ones not at all (apply
-writes their fields itself)."""
+uGUI's from its table, the project's own from their ``.cs`` (read once per run), generated ones
+not at all (apply writes their fields itself)."""
 
 from __future__ import annotations
 
@@ -8,9 +8,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.unity._ugui_fields import UguiClass, ugui_enums, ugui_fields
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo
 from unityscaffold.unity.scriptfacts import ProjectFacts, read_script_facts
+from unityscaffold.unity.ugui import ugui_class
+from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["ScriptFacts"]
 
@@ -28,6 +31,7 @@ class ScriptFacts:
 
     def __post_init__(self) -> None:
         self.enums.update(rossharp_catalog().enums)
+        self.enums.update(ugui_enums())
         for info in self.scripts.values():
             if info.guid not in self.rossharp_names:
                 self._by_name.setdefault(info.class_name, []).append(info)
@@ -38,8 +42,19 @@ class ScriptFacts:
         if name is not None:
             return self.rossharp.facts(name)
         info = self.scripts.get(guid)
-        found = self._project(info) if info is not None else None
+        if info is None:
+            ugui = _ugui(guid)
+            return ugui.script if ugui is not None else None
+        found = self._project(info)
         return found.script if found is not None else None
+
+    def defaults(self, guid: str) -> tuple[tuple[str, FieldValue | Verbatim], ...]:
+        """Every field Unity serializes for the script with ``guid``, in order, at the value
+        a new component starts with; () when they are not known."""
+        if guid in self.rossharp_names or guid in self.scripts:
+            return ()
+        ugui = _ugui(guid)
+        return ugui.defaults if ugui is not None else ()
 
     def _project(self, info: ScriptInfo) -> ProjectFacts | None:
         if info.guid not in self._read:
@@ -67,3 +82,9 @@ class ScriptFacts:
             or class_name in self._by_name
             or rossharp_catalog().named(class_name) is not None
         )
+
+
+def _ugui(guid: str) -> UguiClass | None:
+    """uGUI's script with ``guid`` (its GUID is the same in every project), or None."""
+    name = ugui_class(guid)
+    return ugui_fields(name) if name is not None else None

@@ -26,7 +26,7 @@ from unityscaffold.unity._emit import emit_field, value_equals
 from unityscaffold.unity._fileids import stable_file_id
 from unityscaffold.unity._split import Doc
 from unityscaffold.unity.index import GameObject, SceneComponent
-from unityscaffold.unity.values import FieldValue, ScriptRef
+from unityscaffold.unity.values import FieldValue, ScriptRef, Verbatim
 
 __all__ = [
     "component_id_parts",
@@ -233,15 +233,20 @@ def ensure_component(
     script: ScriptRef,
     fields: Sequence[tuple[str, FieldValue]],
     key: str | None = None,
+    defaults: Sequence[tuple[str, FieldValue | Verbatim]] = (),
 ) -> int:
     """Update ``existing`` (``target``'s component running ``script``) or attach a new one
-    (whose fileID derives from ``key`` too when given); return the component's fileID."""
+    (whose fileID derives from ``key`` too when given); return the component's fileID.
+
+    A new component gets every field of ``defaults`` (the script's serialized fields in order,
+    at the values Unity gives a new one), ``fields`` replacing theirs; an existing one only
+    ``fields``: the bytes of fields the manifest does not set stay the user's."""
     _require_editable(docs, target)
     if existing is not None:
         set_fields(docs, docs.require(existing.file_id), fields)
         return existing.file_id
     go_doc = docs.require(target.file_id)
-    lines = [line for name, value in fields for line in _emit(docs, name, value)]
+    lines = _new_fields(docs, fields, defaults)
     comp_id = stable_file_id(component_id_parts(target, script, key), _Taken(docs))
     era = docs.era
     text = new_monobehaviour(era, _exemplar(docs, 114), comp_id, target.file_id, script, lines)
@@ -250,6 +255,25 @@ def ensure_component(
     T.append_list_item(go_doc, "m_Component", component_item(era, 114, comp_id))
     docs.touch(go_doc)
     return comp_id
+
+
+def _new_fields(
+    docs: Documents,
+    fields: Sequence[tuple[str, FieldValue]],
+    defaults: Sequence[tuple[str, FieldValue | Verbatim]],
+) -> list[str]:
+    """The lines of a new component's fields: ``defaults`` in their order, ``fields`` replacing
+    the values they set, then any of ``fields`` that ``defaults`` does not list."""
+    given = {name: _emit(docs, name, value) for name, value in fields}
+    lines = []
+    for name, default in defaults:
+        if name in given:
+            lines += given.pop(name)
+        elif isinstance(default, Verbatim):
+            lines += default.text.split("\n")
+        else:
+            lines += _emit(docs, name, default)
+    return lines + [line for name, _ in fields if name in given for line in given[name]]
 
 
 def component_id_parts(target: GameObject, script: ScriptRef, key: str | None) -> tuple[str, ...]:

@@ -27,7 +27,7 @@ from unityscaffold.unity._validate import check_docs
 from unityscaffold.unity.builtins import BuiltinClass
 from unityscaffold.unity.index import GameObject, Hierarchy, SceneComponent
 from unityscaffold.unity.textdiff import diff
-from unityscaffold.unity.values import MONOSCRIPT_FILE_ID, FieldValue, ScriptRef
+from unityscaffold.unity.values import MONOSCRIPT_FILE_ID, FieldValue, ScriptRef, Verbatim
 
 __all__ = ["Fields", "GameObjectNotFound", "SceneDocument"]
 
@@ -264,6 +264,7 @@ class SceneDocument:
         fields: Fields = (),
         key: str | None = None,
         adopt: SceneComponent | None = None,
+        defaults: Sequence[tuple[str, FieldValue | Verbatim]] = (),
     ) -> SceneComponent:
         """Attach ``script`` to ``go`` or update the one already there; idempotent.
 
@@ -271,6 +272,8 @@ class SceneDocument:
         values that already match keep their bytes and missing fields are inserted following
         that order (which should be the script's declaration order). With ``key`` the instance
         is the one made for that key (see :meth:`keyed_component`), else ``adopt`` if given.
+        A new component is written with every field of ``defaults`` (see
+        ``_edits.ensure_component``).
         """
         items = _field_list(fields)
         target = self._go(go)
@@ -278,7 +281,9 @@ class SceneDocument:
             existing = self.find_component(target, script.guid, script.file_id)
         else:
             existing = self.keyed_component(target, script, key) or adopt
-        file_id = _edits.ensure_component(self._docs, target, existing, script, items, key)
+        file_id = _edits.ensure_component(
+            self._docs, target, existing, script, items, key, defaults
+        )
         return self.component(file_id)
 
     def keyed_component(

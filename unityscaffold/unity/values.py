@@ -24,6 +24,7 @@ __all__ = [
     "InlineMap",
     "ObjectRef",
     "ScriptRef",
+    "Verbatim",
     "script_file_id_for_dll_class",
 ]
 
@@ -38,6 +39,14 @@ class ObjectRef:
     """A reference to an object in the same file: ``{fileID: N}``; ``ObjectRef(0)`` is null."""
 
     file_id: int
+
+
+@dataclass(frozen=True, slots=True)
+class Verbatim:
+    """A field's default exactly as Unity writes it for a new component (key and indent
+    included, lines joined by ``\\n``): a layout read off a file Unity saved, kept byte for byte."""
+
+    text: str
 
 
 @dataclass(frozen=True, slots=True)
