@@ -8,11 +8,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._rossharp import RosSharp
-from unityscaffold.unity._ugui_fields import UguiClass, ugui_enums, ugui_fields
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo
 from unityscaffold.unity.scriptfacts import ProjectFacts, read_script_facts
 from unityscaffold.unity.ugui import ugui_class
+from unityscaffold.unity.ugui_fields import UguiClass, ugui_enums, ugui_fields
 from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["ScriptFacts"]
