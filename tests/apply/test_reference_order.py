@@ -100,7 +100,7 @@ components:
      fields: {Topic: /a, PublishedTransform: "@Main Camera"}}
   - {script: Image, gameobject: Canvas/B}
   - {script: Button, gameobject: Canvas/B,
-     fields: {m_Interactable: 1, m_TargetGraphic: "@Canvas/B:Image"}}
+     fields: {m_Interactable: true, m_TargetGraphic: "@Canvas/B:Image"}}
 objects:
   - path: Canvas
     ui: true
@@ -114,8 +114,8 @@ objects:
             '/a, PublishedTransform: "@Main Camera', '/b, PublishedTransform: "@Directional Light'
         )
         .replace(
-            'm_Interactable: 1, m_TargetGraphic: "@Canvas/B:Image',
-            'm_Interactable: 0, m_TargetGraphic: "@Canvas/B',
+            'm_Interactable: true, m_TargetGraphic: "@Canvas/B:Image',
+            'm_Interactable: false, m_TargetGraphic: "@Canvas/B',
         )
         .replace('m_RenderMode: 0, m_Camera: "@Main Camera', 'm_RenderMode: 1, m_Camera: "@Eye')
     )
