@@ -24,7 +24,7 @@ INERTIAL = (
 
 
 def lines(tree: ImportedObject) -> list[str]:
-    return [f"{'  ' * depth}{o.name} {list(o.components)}" for depth, o in tree.walk()]
+    return [f"{'  ' * depth}{o.name} {o.component_names}" for depth, o in tree.walk()]
 
 
 def test_links_hold_visuals_collisions_then_child_links_in_joint_order() -> None:
@@ -90,7 +90,7 @@ def test_a_joint_gets_components_only_between_two_links_with_inertials(
         '<limit effort="1" velocity="1"/></joint></robot>'.encode()
     )
     link = importer_tree(robot).children[1].children[2]
-    assert link.name == "c" and list(link.components) == components
+    assert link.name == "c" and link.component_names == components
 
 
 def test_poses_and_sizes_follow_the_origins_and_shapes() -> None:
@@ -134,7 +134,7 @@ def test_the_tree_matches_the_one_rossharps_importer_built_for_r2d2(
 ) -> None:
     scene = SceneDocument.load(r2d2_scene)
     expected = [(d, name, labels) for d, name, _, labels in _scene_tree(scene, "r2d2")]
-    ours = [(d, o.name, list(o.components)) for d, o in importer_tree(read_urdf(r2d2_urdf)).walk()]
+    ours = [(d, o.name, o.component_names) for d, o in importer_tree(read_urdf(r2d2_urdf)).walk()]
     assert len(ours) == 114
     assert ours == expected
 

@@ -27,14 +27,27 @@ from dataclasses import dataclass
 from pathlib import PurePosixPath
 
 from unityscaffold.urdf import transforms as t
+from unityscaffold.urdf._components import (
+    CYLINDER_MESH,
+    DEFAULT_MATERIAL,
+    ComponentRef,
+    ImportedComponent,
+    MaterialRef,
+    Value,
+    geometry_components,
+    joint_components,
+    link_components,
+    part_components,
+    plugin_components,
+)
 from unityscaffold.urdf.model import (
     Box,
     Collision,
     Cylinder,
     Geometry,
     Joint,
-    JointType,
     Link,
+    Material,
     Mesh,
     Robot,
     Sphere,
@@ -42,7 +55,18 @@ from unityscaffold.urdf.model import (
     Visual,
 )
 
-__all__ = ["ImportedObject", "LocalTransform", "Role", "importer_tree"]
+__all__ = [
+    "CYLINDER_MESH",
+    "DEFAULT_MATERIAL",
+    "ComponentRef",
+    "ImportedComponent",
+    "ImportedObject",
+    "LocalTransform",
+    "MaterialRef",
+    "Role",
+    "Value",
+    "importer_tree",
+]
 
 
 class Role(enum.Enum):
@@ -69,16 +93,21 @@ class LocalTransform:
 
 @dataclass(frozen=True, slots=True)
 class ImportedObject:
-    """One GameObject: ``components`` are class names after the Transform, in the order ROS#
-    adds them (empty for a model instance, whose components are the model's)."""
+    """One GameObject: ``components`` follow the Transform in the order ROS# adds them, each
+    with the fields the importer sets (none for a model instance: its components are the
+    model's)."""
 
     name: str
     role: Role
     key: str
     transform: LocalTransform
-    components: tuple[str, ...]
+    components: tuple[ImportedComponent, ...]
     children: tuple[ImportedObject, ...] = ()
     not_editable: bool = False
+
+    @property
+    def component_names(self) -> list[str]:
+        return [component.name for component in self.components]
 
     def walk(self, depth: int = 0) -> list[tuple[int, ImportedObject]]:
         """This object and everything under it, depth first, with their depths."""
@@ -88,47 +117,29 @@ class ImportedObject:
         return found
 
 
-#: The components ROS# adds for each joint type, after the UrdfJoint script.
-JOINT_COMPONENTS: dict[JointType, tuple[str, ...]] = {
-    JointType.FIXED: ("UrdfJointFixed", "FixedJoint"),
-    JointType.CONTINUOUS: ("UrdfJointContinuous", "HingeJoint", "HingeJointAngleCalculator"),
-    JointType.REVOLUTE: (
-        "UrdfJointRevolute",
-        "HingeJoint",
-        "HingeJointLimitsManager",
-        "HingeJointAngleCalculator",
-    ),
-    JointType.PRISMATIC: ("UrdfJointPrismatic", "ConfigurableJoint", "PrismaticJointLimitsManager"),
-    JointType.FLOATING: ("UrdfJointFloating", "ConfigurableJoint"),
-    JointType.PLANAR: ("UrdfJointPlanar", "ConfigurableJoint"),
-}
-
-
-def importer_tree(robot: Robot) -> ImportedObject:
+def importer_tree(robot: Robot, *, plugin_newline: str = "\r\n") -> ImportedObject:
     """The robot's GameObjects as ROS#'s importer creates them (``robot`` must be a tree, as
-    ``read_urdf`` guarantees)."""
+    ``read_urdf`` guarantees). ``plugin_newline`` is the importing machine's newline, which
+    ends the lines of the plugin texts (the default is Windows', as in ROS#'s samples)."""
+    texts = [plugin.text.replace("\n", plugin_newline) for plugin in robot.plugins]
     plugins = ImportedObject(
-        "Plugins",
-        Role.PLUGINS,
-        "plugins",
-        LocalTransform(),
-        ("UrdfPlugins", *("UrdfPlugin" for _ in robot.plugins)),
+        "Plugins", Role.PLUGINS, "plugins", LocalTransform(), tuple(plugin_components(texts))
     )
-    root = _link(robot, robot.root, None, parent_has_body=False)
+    root = _link(robot, robot.root, None, parent_key=None)
     # a new GameObject, placed where the user's selection is: not ROS#'s alignment
     placed = LocalTransform(rotation=t.IDENTITY)
-    return ImportedObject(robot.name, Role.ROBOT, "robot", placed, ("UrdfRobot",), (plugins, root))
+    robot_script = (ImportedComponent("UrdfRobot"),)
+    return ImportedObject(robot.name, Role.ROBOT, "robot", placed, robot_script, (plugins, root))
 
 
 def _link(
-    robot: Robot, link: Link, joint: Joint | None, *, parent_has_body: bool
+    robot: Robot, link: Link, joint: Joint | None, *, parent_key: str | None
 ) -> ImportedObject:
+    """A link; ``parent_key`` is the parent link's key when that link has a Rigidbody."""
     key = f"link[{robot.links.index(link)}]"
-    components = ["UrdfLink"]
-    if link.inertial is not None:
-        components += ["Rigidbody", "UrdfInertial"]
-        if joint is not None and parent_has_body:
-            components += JOINT_COMPONENTS[joint.type]
+    components = link_components(link, key, has_joint=joint is not None)
+    if link.inertial is not None and joint is not None and parent_key is not None:
+        components += joint_components(joint, key, parent_key)
     origin = None if joint is None else joint.origin
     pose = LocalTransform(t.origin_position(origin), t.origin_rotation(origin))
     visuals = ImportedObject(
@@ -136,7 +147,7 @@ def _link(
         Role.VISUALS,
         f"{key}/visuals",
         LocalTransform(),
-        ("UrdfVisuals",),
+        (ImportedComponent("UrdfVisuals"),),
         tuple(_part(v, f"{key}/visual[{i}]") for i, v in enumerate(link.visuals)),
         not_editable=True,
     )
@@ -145,13 +156,13 @@ def _link(
         Role.COLLISIONS,
         f"{key}/collisions",
         LocalTransform(),
-        ("UrdfCollisions",),
+        (ImportedComponent("UrdfCollisions"),),
         tuple(_part(c, f"{key}/collision[{i}]") for i, c in enumerate(link.collisions)),
         not_editable=True,
     )
+    body = key if link.inertial is not None else None
     children = tuple(
-        _link(robot, robot.link(j.child), j, parent_has_body=link.inertial is not None)
-        for j in robot.child_joints(link.name)
+        _link(robot, robot.link(j.child), j, parent_key=body) for j in robot.child_joints(link.name)
     )
     return ImportedObject(
         link.name, Role.LINK, key, pose, tuple(components), (visuals, collisions, *children)
@@ -165,32 +176,27 @@ def _part(part: Visual | Collision, key: str) -> ImportedObject:
         t.origin_rotation(part.origin),
         t.geometry_scale(part.geometry),
     )
+    material = part.material if isinstance(part, Visual) else None
     return ImportedObject(
         (part.name or "unnamed") if visual else "unnamed",
         Role.VISUAL if visual else Role.COLLISION,
         key,
         pose,
-        ("UrdfVisual",) if visual else ("UrdfCollision",),
-        (_shape(part.geometry, f"{key}/shape", visual=visual),),
+        tuple(part_components(part.geometry, visual=visual)),
+        (_shape(part.geometry, material, f"{key}/shape", visual=visual),),
     )
 
 
 _VISUAL_SHAPES = {Box: "Cube", Cylinder: "Cylinder", Sphere: "Sphere"}
-_COLLIDERS = {
-    Box: ("Box", "BoxCollider"),
-    Cylinder: ("Cylinder", "MeshCollider"),
-    Sphere: ("Sphere", "SphereCollider"),
-}
+_COLLISION_SHAPES = {Box: "Box", Cylinder: "Cylinder", Sphere: "Sphere"}
 
 
-def _shape(geometry: Geometry, key: str, *, visual: bool) -> ImportedObject:
+def _shape(
+    geometry: Geometry, material: Material | None, key: str, *, visual: bool
+) -> ImportedObject:
+    components = tuple(geometry_components(geometry, material, visual=visual))
     if isinstance(geometry, Mesh):
         stem = PurePosixPath(geometry.filename).stem
-        return ImportedObject(stem, Role.MODEL, key, LocalTransform(), ())
-    if visual:
-        name = _VISUAL_SHAPES[type(geometry)]
-        return ImportedObject(
-            name, Role.SHAPE, key, LocalTransform(), ("MeshFilter", "MeshRenderer")
-        )
-    name, collider = _COLLIDERS[type(geometry)]
-    return ImportedObject(name, Role.SHAPE, key, LocalTransform(), (collider,))
+        return ImportedObject(stem, Role.MODEL, key, LocalTransform(), components)
+    name = (_VISUAL_SHAPES if visual else _COLLISION_SHAPES)[type(geometry)]
+    return ImportedObject(name, Role.SHAPE, key, LocalTransform(), components)
