@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from unityscaffold.errors import LocatedError
 from unityscaffold.unity import SceneDocument
 from unityscaffold.unity._emit import value_equals
 from unityscaffold.unity.catalog import rossharp_catalog
@@ -160,12 +161,12 @@ def test_a_missing_axis_is_rossharps_default_and_missing_dynamics_leave_the_spri
     assert hinge.field("m_Spring") is None
 
 
-def test_a_non_diagonal_inertia_is_not_guessed() -> None:
+def test_a_non_diagonal_inertia_is_refused_not_guessed() -> None:
     robot = parse_urdf(
         b'<robot name="r"><link name="p"><inertial><mass value="1"/>'
         b'<inertia ixx="1" ixy="0.1" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link></robot>'
     )
-    with pytest.raises(NotImplementedError, match="non-diagonal"):
+    with pytest.raises(LocatedError, match=r"products of inertia .* not supported yet"):
         importer_tree(robot)
 
 

@@ -11,7 +11,14 @@ import hashlib
 import re
 from pathlib import Path, PurePosixPath
 
-__all__ = ["folder_meta", "guid_for", "meta_guid", "monoscript_meta", "read_meta_guid"]
+__all__ = [
+    "folder_meta",
+    "guid_for",
+    "meta_guid",
+    "monoscript_meta",
+    "native_format_meta",
+    "read_meta_guid",
+]
 
 _GUID_LINE_RE = re.compile(r"^guid: ([0-9a-f]{32})\s*$", re.M)
 _DRIVE_RE = re.compile(r"[A-Za-z]:")  # compiled once: guid_for runs for every generated file
@@ -65,6 +72,20 @@ def folder_meta(guid: str) -> str:
         "folderAsset: yes\n"
         "DefaultImporter:\n"
         "  externalObjects: {}\n"
+        "  userData: \n"
+        "  assetBundleName: \n"
+        "  assetBundleVariant: \n"
+    )
+
+
+def native_format_meta(guid: str, main_object_file_id: int) -> str:
+    """The ``.meta`` of a file Unity saves in its own format (``.mat``, ``.asset``)."""
+    return (
+        "fileFormatVersion: 2\n"
+        f"guid: {guid}\n"
+        "NativeFormatImporter:\n"
+        "  externalObjects: {}\n"
+        f"  mainObjectFileID: {main_object_file_id}\n"
         "  userData: \n"
         "  assetBundleName: \n"
         "  assetBundleVariant: \n"

@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TypeAlias
 
+from unityscaffold.errors import LocatedError
 from unityscaffold.unity.values import AssetRef, Enum, FieldValue, InlineMap
 from unityscaffold.urdf import transforms as t
 from unityscaffold.urdf.model import (
@@ -158,7 +159,12 @@ def _principal_inertia(inertial: Inertial) -> tuple[InlineMap, InlineMap]:
     """
     i = inertial.inertia
     if any(t.f32(v) != 0 for v in (i.ixy, i.ixz, i.iyz)):
-        raise NotImplementedError("a non-diagonal inertia tensor (ROS#'s eigen-decomposition)")
+        raise LocatedError.at(
+            inertial.location,
+            "an inertia tensor with products of inertia (ixy, ixz, iyz) is not supported yet",
+            hint="give the link's principal moments with ixy, ixz and iyz 0, rotating the "
+            "inertial <origin> instead",
+        )
     xx, yy, zz = (max(t.f32(v), _MIN_INERTIA) for v in (i.ixx, i.iyy, i.izz))
     # the identity eigenvectors as ROS#'s quaternion (0, 0, 0, 1), then Ros2Unity: (y, -z, -x, w)
     return _vector((yy, zz, xx)), _quaternion((0.0, -0.0, -0.0, 1.0))

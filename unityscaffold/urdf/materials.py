@@ -1,0 +1,51 @@
+"""The ``.mat`` files ROS#'s importer makes in the robot's ``Materials`` folder.
+
+``Default`` (grey, transparent: what a mesh visual without a material of its own gets), one
+per top-level ``<material>``, and one per material a visual defines inline under a name not
+yet taken: the first definition of a name wins, as ROS# reuses a ``.mat`` that exists. A
+material without a name is named after its colour (``rgba-1-0-0-1``) or texture. All are
+Standard materials with ROS#'s metallic and smoothness of 0.75.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from unityscaffold.errors import LocatedError
+from unityscaffold.unity.material import standard_material
+from unityscaffold.urdf._components import material_name
+from unityscaffold.urdf.model import Link, Material, Robot
+
+__all__ = ["DEFAULT_MATERIAL_NAME", "importer_materials"]
+
+DEFAULT_MATERIAL_NAME = "Default"
+_DEFAULT_COLOR = (0.33, 0.33, 0.33, 0.0)
+
+
+def importer_materials(robot: Robot) -> dict[str, str]:
+    """``{file name: text}`` of every ``.mat`` file, by name."""
+    colours: dict[str, tuple[float, float, float, float]] = {DEFAULT_MATERIAL_NAME: _DEFAULT_COLOR}
+    for material in (*robot.materials, *_visual_materials(robot, robot.root)):
+        name = material_name(material)
+        if name in colours:
+            continue
+        if material.color is None and material.texture is not None:
+            raise LocatedError.at(
+                material.location,
+                f"material {name!r} has a texture, which is not supported yet",
+                hint='give the material a <color rgba="…"/> instead',
+            )
+        colours[name] = material.color or (1.0, 1.0, 1.0, 1.0)  # Standard's own white
+    return {
+        f"{name}.mat": standard_material(name, colour, metallic=0.75, smoothness=0.75)
+        for name, colour in sorted(colours.items())
+    }
+
+
+def _visual_materials(robot: Robot, link: Link) -> Iterator[Material]:
+    """Visual materials in the order ROS# builds the links (depth first, by joint order)."""
+    for visual in link.visuals:
+        if visual.material is not None:
+            yield visual.material
+    for joint in robot.child_joints(link.name):
+        yield from _visual_materials(robot, robot.link(joint.child))
