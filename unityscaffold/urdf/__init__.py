@@ -1,13 +1,24 @@
 """urdf stage: a robot's URDF, read exactly, and turned into what ROS#'s importer would build.
 
-``read_urdf`` follows URDF's grammar into the frozen model of ``model`` (all problems of a file
-reported at once, each at its line and column); ``resolve_meshes`` finds the file a
-``package://`` or ``$(find pkg)`` mesh names. The stage is pure: it reads and returns values;
-``apply`` is to consume them (see ``docs/architecture.md``).
+``import_robot`` is the stage: the URDF read into the frozen model of ``model`` (all problems
+of a file reported at once, each at its line and column), its ``package://`` and
+``$(find pkg)`` meshes found, and the result: the GameObjects with their components and fields
+(``objects``), and the asset files (materials, STL meshes). ``read_urdf`` and
+``resolve_meshes`` are its first steps on their own. The stage is pure: it reads and returns
+values, which ``apply`` is to consume (see ``docs/architecture.md``).
 """
 
+from unityscaffold.urdf._import import RobotImport, import_robot
 from unityscaffold.urdf._load import parse_urdf, read_urdf
 from unityscaffold.urdf._packages import ResolvedMesh, resolve_meshes
 from unityscaffold.urdf.model import Robot
 
-__all__ = ["ResolvedMesh", "Robot", "parse_urdf", "read_urdf", "resolve_meshes"]
+__all__ = [
+    "ResolvedMesh",
+    "Robot",
+    "RobotImport",
+    "import_robot",
+    "parse_urdf",
+    "read_urdf",
+    "resolve_meshes",
+]

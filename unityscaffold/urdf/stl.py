@@ -29,9 +29,10 @@ _FACET = struct.Struct("<12f2x")
 Facet = tuple[float, ...]  # normal xyz, then the three vertices' xyz, in ROS's axes
 
 
-def stl_mesh_assets(path: Path) -> list[tuple[str, str]]:
-    """``(file name, text)`` of each ``<stem>_<i>.asset`` ROS# makes from the STL at ``path``."""
-    stem = path.stem
+def stl_mesh_assets(path: Path, stem: str | None = None) -> list[tuple[str, str]]:
+    """``(file name, text)`` of each ``<stem>_<i>.asset`` ROS# makes from the STL at ``path``
+    (``stem``: the name the URDF gives the file, by default its name on disk)."""
+    stem = path.stem if stem is None else stem
     return [
         (f"{stem}_{i}.asset", mesh_asset(f"{stem}_{i}", m)) for i, m in enumerate(stl_meshes(path))
     ]

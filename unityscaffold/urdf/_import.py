@@ -1,0 +1,53 @@
+"""The urdf stage's one entry point: a URDF file in, everything ROS#'s importer would make out."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path, PurePosixPath
+
+from unityscaffold.urdf._load import read_urdf
+from unityscaffold.urdf._packages import ResolvedMesh, resolve_meshes
+from unityscaffold.urdf.materials import importer_materials
+from unityscaffold.urdf.model import Robot
+from unityscaffold.urdf.objects import ImportedObject, importer_tree
+from unityscaffold.urdf.stl import stl_mesh_assets
+
+__all__ = ["RobotImport", "import_robot"]
+
+
+@dataclass(frozen=True, slots=True)
+class RobotImport:
+    """What importing one URDF makes.
+
+    ``objects`` is the GameObject tree; ``files`` maps paths relative to the robot's asset
+    folder (``Materials/blue.mat``, ``<package>/meshes/arm_0.asset``) to their text, in sorted
+    order; ``meshes`` maps each ``<mesh filename>`` to its file. Model files other than STL
+    (``.dae``, …) are referenced where they are: copying them is the writer's.
+    """
+
+    robot: Robot
+    objects: ImportedObject
+    files: Mapping[str, str]
+    meshes: Mapping[str, ResolvedMesh]
+
+
+def import_robot(
+    urdf: Path,
+    *,
+    packages: Mapping[str, Path],
+    project: Path,
+    plugin_newline: str = "\r\n",
+) -> RobotImport:
+    """Read ``urdf``, resolve its meshes against ``packages`` (inside ``project``) and build
+    what ROS#'s importer would: every problem is a located error, and nothing is written."""
+    robot = read_urdf(urdf)
+    meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
+    files = {f"Materials/{name}": text for name, text in importer_materials(robot).items()}
+    for mesh in sorted(meshes.values(), key=lambda m: (m.package, str(m.relative))):
+        if mesh.relative.suffix.lower() == ".stl":
+            folder = PurePosixPath(mesh.package) / mesh.relative.parent
+            for name, text in stl_mesh_assets(mesh.path, mesh.relative.stem):
+                files[str(folder / name)] = text
+    objects = importer_tree(robot, plugin_newline=plugin_newline)
+    return RobotImport(robot, objects, dict(sorted(files.items())), meshes)
