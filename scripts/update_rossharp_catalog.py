@@ -40,6 +40,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the package's C# reader, also when run from a bare checkout
 
+from unityscaffold.unity.catalog import scripts_fingerprint  # noqa: E402
 from unityscaffold.unity.csharp import (  # noqa: E402
     NEVER_SERIALIZED,
     PRIMITIVES,
@@ -286,6 +287,11 @@ def build_catalog(package: Package, guids: dict[str, dict[str, str]], release: s
             f"by scripts/update_rossharp_catalog.py; do not edit by hand."
         ),
         "releases": releases,
+        # what tells the releases apart in a project's package folder, whatever its package.json
+        "fingerprints": {
+            r: scripts_fingerprint((p, by[r]) for p, by in guids.items() if r in by)
+            for r in releases
+        },
         "enums": dict(sorted(enums.items())),
         "scripts": scripts,
     }

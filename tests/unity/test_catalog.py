@@ -16,7 +16,7 @@ from pathlib import Path
 
 from helpers import require, text_diff
 
-from unityscaffold.unity.catalog import rossharp_catalog
+from unityscaffold.unity.catalog import imported_by_unity, rossharp_catalog, scripts_fingerprint
 
 REPO = Path(__file__).resolve().parents[2]
 SCRIPT = REPO / "scripts" / "update_rossharp_catalog.py"
@@ -99,3 +99,18 @@ def test_abstract_generic_and_editor_classes_are_not_attachable() -> None:
     assert not flags["RosConnectorEditor"] and not flags["UrdfJoint"]
     assert flags["UrdfJointRevolute"] and flags["JointStatePatcher"]
     assert sum(flags.values()) == 51
+
+
+def test_every_release_has_a_fingerprint_of_its_own() -> None:
+    catalog = rossharp_catalog()
+    assert sorted(catalog.fingerprints.values()) == sorted(catalog.releases)
+
+
+def test_a_fingerprint_counts_what_unity_imports_and_nothing_else() -> None:
+    scripts = [("Runtime/A.cs", "1" * 32), ("Editor/B.cs", "2" * 32)]
+    extra = [("Samples~/S/C.cs", "3" * 32), (".hidden/D.cs", "4" * 32)]
+    assert scripts_fingerprint(scripts + extra) == scripts_fingerprint(reversed(scripts))
+    assert scripts_fingerprint(scripts) != scripts_fingerprint(
+        [*scripts[:1], ("Editor/B.cs", "5" * 32)]
+    )
+    assert imported_by_unity("Runtime/X~y.cs") and not imported_by_unity("X~/y.cs")

@@ -77,7 +77,7 @@ def _project(tmp_path: Path, product_guid: str | None = None) -> Path:
         (root / "ProjectSettings" / "ProjectSettings.asset").write_text(
             f"%YAML 1.1\n--- !u!129 &1\nPlayerSettings:\n  productGUID: {product_guid}\n"
         )
-    pkg = root / "Library" / "PackageCache" / "com.siemens.ros-sharp@1" / "Runtime"
+    pkg = root / "Packages" / "com.siemens.ros-sharp" / "Runtime"
     pkg.mkdir(parents=True)
     (pkg / "RosConnector.cs").write_text("class RosConnector {}")
     (pkg / "RosConnector.cs.meta").write_text(monoscript_meta("ff98778ae051cfd40a6e4effdf851ebd"))
@@ -104,6 +104,15 @@ def test_scripts_are_found_by_class_name_in_assets_and_packages(tmp_path: Path) 
     found = find_script(root, "RosConnector")
     assert found is not None and found.guid == "ff98778ae051cfd40a6e4effdf851ebd"
     assert find_script(root, "Nope") is None
+
+
+def test_unitys_cache_is_not_indexed(tmp_path: Path) -> None:
+    root = _project(tmp_path)
+    cached = root / "Library" / "PackageCache" / "com.unity.ugui@1" / "Runtime" / "Image.cs"
+    cached.parent.mkdir(parents=True)
+    cached.write_text("class Image {}")
+    (cached.parent / "Image.cs.meta").write_text(monoscript_meta("d" * 32))
+    assert sorted(s.class_name for s in script_index(root).values()) == ["Mine", "RosConnector"]
 
 
 def test_two_scripts_with_one_class_name_are_ambiguous(tmp_path: Path) -> None:

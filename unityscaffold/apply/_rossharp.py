@@ -1,22 +1,27 @@
-"""ROS# in one project: which release it pins, and the GUID and class of each of its scripts.
+"""ROS# in one project: which release it uses, and the GUID and class of each of its scripts.
 
-Resolution order: the installed package (``Library/PackageCache``, or an embedded copy under
-``Packages/``) when it is there *and* of the pinned release, whose ``.meta`` files then give the
-GUIDs; else the catalog (``unity/rossharp_catalog.json``) of the release pinned in
+The GUIDs come from the project's own files, never from Unity's cache: an embedded copy under
+``Packages/com.siemens.ros-sharp`` (part of the project, committed) gives its ``.meta`` GUIDs;
+otherwise the catalog (``unity/rossharp_catalog.json``) gives those of the release pinned in
 ``Packages/manifest.json``. ROS# regenerated every GUID in 2.1.0 and restored the old ones in
-2.2.1, so the release matters. An installed package of another release than the pin is reported:
-Unity replaces it with the pinned one on its next start, so the pin is what the scene must match.
+2.2.1, so the release matters. A copy in ``Library/PackageCache`` changes nothing; when it holds
+another release than the pin, that is noted (Unity replaces it on its next start). A copy's
+release is told by its content, the digest of its scripts' paths and GUIDs, as ``package.json``
+may say otherwise (2.2.1's says 2.2.0); only a copy the catalog does not know is taken at its
+``package.json``'s word.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.errors import UserError
-from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
+from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog, scripts_fingerprint
+from unityscaffold.unity.meta import read_meta_guid
 from unityscaffold.unity.project import ScriptInfo
 from unityscaffold.unity.values import ScriptRef
 
@@ -46,17 +51,34 @@ def pinned_version(project: Path) -> str | None:
     return ".".join(found.groups()) if found else spec
 
 
-def installed_version(project: Path) -> str | None:
-    """The ``version`` in the installed package's ``package.json``, if Unity has fetched it."""
-    candidates = sorted((project / "Library" / "PackageCache").glob(f"{PACKAGE}@*/package.json"))
-    candidates.append(project / "Packages" / PACKAGE / "package.json")
-    for path in candidates:
-        try:
-            data = json.loads(path.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            continue
-        if isinstance(data, dict) and isinstance(data.get("version"), str):
-            return str(data["version"])
+def package_release(folder: Path) -> str | None:
+    """The release of the ROS# package in ``folder``, told by its scripts' GUIDs, else by its
+    ``package.json``; None when ``folder`` holds no package."""
+    try:
+        data = json.loads((folder / "package.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    scripts = []
+    for directory, dirs, files in os.walk(folder):
+        dirs.sort()
+        for name in sorted(files):
+            if name.endswith(".cs.meta"):
+                meta = Path(directory) / name
+                guid = read_meta_guid(meta)
+                if guid is not None:
+                    scripts.append((meta.relative_to(folder).as_posix()[: -len(".meta")], guid))
+    found = rossharp_catalog().release_with(scripts_fingerprint(scripts))
+    if found is None and isinstance(data, dict) and isinstance(data.get("version"), str):
+        found = str(data["version"])
+    return found
+
+
+def cached_release(project: Path) -> str | None:
+    """The release of the copy Unity keeps in ``Library/PackageCache``, if it has fetched one."""
+    for folder in sorted((project / "Library" / "PackageCache").glob(f"{PACKAGE}@*")):
+        found = package_release(folder)
+        if found is not None:
+            return found
     return None
 
 
@@ -65,28 +87,32 @@ class RosSharp:
     """Where ROS#'s scripts are, for one Unity project."""
 
     version: str | None  # the pinned release
-    installed: dict[str, str]  # class name -> GUID, from the installed package's .meta files
+    installed: dict[str, str]  # class name -> GUID, from an embedded package's .meta files
     installed_version: str | None = None
     notes: tuple[str, ...] = field(default=())
 
     @classmethod
     def of(cls, project: Path, scripts: dict[str, ScriptInfo]) -> RosSharp:
+        embedded = project / "Packages" / PACKAGE
+        if (embedded / "package.json").is_file():  # the project's own copy, committed with it
+            prefix = f"Packages/{PACKAGE}/"
+            installed = {
+                info.class_name: guid
+                for guid, info in sorted(scripts.items())
+                if info.path.startswith(prefix)
+            }
+            release = package_release(embedded)
+            return cls(release or pinned_version(project), installed, release)
         pinned = pinned_version(project)
-        on_disk = installed_version(project)
-        installed = {
-            info.class_name: guid
-            for guid, info in sorted(scripts.items())
-            if PACKAGE in info.path or "ros-sharp" in info.path
-        }
+        cached = cached_release(project)
         notes: tuple[str, ...] = ()
-        if installed and on_disk and pinned and on_disk != pinned:
+        if cached and pinned and cached != pinned:
             notes = (
-                f"ROS# {on_disk} is installed in Library/PackageCache but Packages/manifest.json "
+                f"ROS# {cached} is installed in Library/PackageCache but Packages/manifest.json "
                 f"pins {pinned}: using {pinned}'s script GUIDs (Unity installs {pinned} when it "
                 "next opens the project)",
             )
-            installed = {}
-        return cls(pinned, installed, on_disk, notes)
+        return cls(pinned, {}, cached, notes)
 
     @property
     def release(self) -> str:
@@ -126,8 +152,8 @@ class RosSharp:
                 raise UserError(
                     f"Packages/manifest.json pins ROS# {self.release}, which the catalog of "
                     f"ROS#'s scripts does not know (it knows {known})",
-                    hint="pin one of those releases, or open the project in Unity once so that "
-                    "the installed package gives the GUIDs",
+                    hint="pin one of those releases, or embed the package under Packages/ so "
+                    "that its own .meta files give the GUIDs",
                 )
         if guid is None:
             raise UserError(

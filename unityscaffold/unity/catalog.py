@@ -13,13 +13,36 @@ followed by ``[]`` (an array or ``List<>``).
 
 from __future__ import annotations
 
+import hashlib
 import json
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 
 from unityscaffold.resources import rossharp_catalog_text
 
-__all__ = ["CatalogField", "CatalogScript", "ScriptCatalog", "rossharp_catalog"]
+__all__ = [
+    "CatalogField",
+    "CatalogScript",
+    "ScriptCatalog",
+    "imported_by_unity",
+    "rossharp_catalog",
+    "scripts_fingerprint",
+]
+
+
+def imported_by_unity(path: str) -> bool:
+    """Whether Unity imports the file at ``path`` (``/``-separated, inside a package): not in a
+    folder ending with ``~`` (``Samples~``) or starting with ``.``, which Unity skips."""
+    return not any(part.endswith("~") or part.startswith(".") for part in path.split("/")[:-1])
+
+
+def scripts_fingerprint(scripts: Iterable[tuple[str, str]]) -> str:
+    """One digest of a package's scripts: ``(path inside the package, GUID)`` of every ``.cs``
+    Unity imports. Two copies of a release give the same digest whatever their ``package.json``
+    says (ROS# 2.2.1's says 2.2.0), and releases whose GUIDs differ give different ones."""
+    lines = sorted(f"{path}\t{guid}\n" for path, guid in scripts if imported_by_unity(path))
+    return hashlib.sha256("".join(lines).encode("utf-8")).hexdigest()
 
 
 @dataclass(frozen=True, slots=True)
@@ -54,6 +77,11 @@ class ScriptCatalog:
     releases: tuple[str, ...]
     enums: dict[str, dict[str, int]]  # full C# name -> member -> value
     scripts: tuple[CatalogScript, ...]
+    fingerprints: dict[str, str]  # scripts_fingerprint -> release
+
+    def release_with(self, fingerprint: str) -> str | None:
+        """The release whose scripts have ``fingerprint``, or None (another or a changed copy)."""
+        return self.fingerprints.get(fingerprint)
 
     def named(self, class_name: str) -> CatalogScript | None:
         return next((s for s in self.scripts if s.class_name == class_name), None)
@@ -83,6 +111,12 @@ def rossharp_catalog() -> ScriptCatalog:
         )
         for s in data["scripts"]
     )
+    fingerprints = {digest: release for release, digest in data["fingerprints"].items()}
     return ScriptCatalog(
-        data["package"], data["sources"], tuple(data["releases"]), data["enums"], scripts
+        data["package"],
+        data["sources"],
+        tuple(data["releases"]),
+        data["enums"],
+        scripts,
+        fingerprints,
     )

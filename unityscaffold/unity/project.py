@@ -1,8 +1,9 @@
 """A Unity project on disk: its root, its per-project salt, and where its scripts are.
 
-Script GUIDs are read from the ``.cs.meta`` files of the project itself (``Assets/``), of
-embedded packages (``Packages/``) and of installed ones (``Library/PackageCache/``), so the
-GUIDs of whichever ROS# release is installed are used rather than a hard-coded table.
+Script GUIDs are read from the ``.cs.meta`` files of the project itself (``Assets/``) and of
+its embedded packages (``Packages/``): the files a team commits. ``Library/`` is Unity's cache,
+present on one machine and not on another (CI), so nothing in it may change an answer: the
+scripts of packages Unity installs there (ROS#, uGUI) are known from their catalogs instead.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ __all__ = [
 
 #: Salt for projects without ``productGUID`` (GUIDs are then only unique per asset path).
 FALLBACK_SALT = "unityscaffold-default-salt"
-SCRIPT_ROOTS = ("Assets", "Packages", "Library/PackageCache")
+SCRIPT_ROOTS = ("Assets", "Packages")
 _PRODUCT_GUID_RE = re.compile(r"^\s*productGUID: ([0-9a-f]{32})\s*$", re.M)
 
 
