@@ -7,6 +7,7 @@ from __future__ import annotations
 import mmap
 import os
 import random
+import shutil
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -207,3 +208,27 @@ def test_a_damaged_record_is_no_record(
     record.write_bytes(data)
     assert scaffold(capsysbinary, *CHECK) == first
     assert planned == [list(CHECK)]  # the record as written is replayed
+
+
+def test_a_symlink_pointed_at_an_identical_copy_is_seen(
+    tmp_path: Path,
+    capsysbinary: pytest.CaptureFixture[bytes],
+    planned: list[list[str]],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # every byte read is the same, but the project is another one (its real path is shown):
+    # what a symlink points at is compared, not only what is read through it
+    first = copy_sample(tmp_path / "robot-a", tmp_path / "cache", monkeypatch)
+    shutil.copytree(first, tmp_path / "robot-b", symlinks=True)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "robot").symlink_to("robot-a")
+    args = (*CHECK, "robot/robot.yaml")
+    before = scaffold(capsysbinary, *args)
+    assert before[0] == 0 and b"robot-a" in before[1]
+    assert len(records(tmp_path / "cache")) == 1
+    (tmp_path / "robot").unlink()
+    (tmp_path / "robot").symlink_to("robot-b")
+    after = scaffold(capsysbinary, *args)
+    assert b"robot-b" in after[1] and b"robot-a" not in after[1]
+    assert after == unrecorded(capsysbinary, monkeypatch, *args)
+    assert len(planned) == 3
