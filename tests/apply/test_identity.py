@@ -198,23 +198,61 @@ def test_a_component_the_manifest_drops_is_removed_by_file_id_after_a_rename(
     assert "81c5dfb51482c2e47b602e8096d45712" not in _scene(project).read_text()
 
 
-def test_a_new_gameobject_at_the_old_path_is_the_manifests_and_the_moved_one_is_cleared(
+def _add_gameobjects(project: Path, path: str) -> None:
+    """GameObjects made in Unity (each a GameObject + Transform, as Create Empty makes it)."""
+    doc = SceneDocument.load(_scene(project))
+    assert doc.ensure_gameobject(path, create=True)
+    doc.write()
+
+
+def _components(project: Path, path: str) -> list[str]:
+    doc = SceneDocument.load(_scene(project))
+    return [c.type_name for c in doc.components_of(doc.find_gameobject(path))]
+
+
+def test_a_renamed_gameobject_whose_old_path_another_one_took_stops_apply_naming_both(
     project: Path,
 ) -> None:
-    _rename(project, "TurtleBot3", "Burger")
-    # Then a new, empty TurtleBot3 (GameObject + Transform, as Create Empty makes it).
-    doc = SceneDocument.load(_scene(project))
-    assert doc.ensure_gameobject("TurtleBot3", create=True)
-    doc.write()
+    # Renamed in Unity, then a new TurtleBot3 (a re-imported robot, Lidar and all) beside it:
+    # the recorded one, with the user's settings on its components, is still the one meant.
+    _rename(project, "TurtleBot3", "Old")
+    _add_gameobjects(project, "TurtleBot3/Lidar")
+    before = snapshot(project)
+    for flags in ([], ["--check"]):
+        run = run_cli("apply", *flags, str(project / "robot.yaml"))
+        assert run.code == 2, run.out
+        assert (
+            f"robot.yaml:{ROBOT_LINE}:78: error: `TurtleBot3` is now `Old` in Main.unity "
+            "(renamed or moved in Unity since the last apply; `TurtleBot3` there now is another "
+            "GameObject); rename it at robot.yaml:7, robot.yaml:13" in run.err
+        )
+        assert "`TurtleBot3/Lidar` is now `Old/Lidar`" in run.err
+        assert snapshot(project) == before
+    run = run_cli("apply", "--follow-renames", str(project / "robot.yaml"))
+    assert run.code == 0, run.err
+    assert "`TurtleBot3` is now `Old` in Main.unity: followed" in run.out
+    assert (project / "robot.yaml").read_text() == MANIFEST.replace("TurtleBot3", "Old")
+    # Nothing moved from one GameObject to the other: the scene is as the user left it.
+    assert _scene(project).read_bytes() == before["Assets/Scenes/Main.unity"]
+    assert _components(project, "TurtleBot3") == ["Transform"]
+    assert _components(project, "TurtleBot3/Lidar") == ["Transform"]
+    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+
+
+def test_two_same_named_siblings_are_told_apart_by_the_one_the_lock_recorded(
+    project: Path,
+) -> None:
+    # A second TurtleBot3 with its own Lidar beside the one apply made.
+    _add_gameobjects(project, "Copy/Lidar")
+    _rename(project, "Copy", "TurtleBot3")
+    scene = _scene(project).read_bytes()
+    lock = (project / "robot.lock.json").read_bytes()
+    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
     run = run_cli("apply", str(project / "robot.yaml"))
     assert run.code == 0, run.err
-    assert "add OdomSubscriber to TurtleBot3" in run.out
-    assert "re-add" not in run.out
-    assert "remove topic /odom from TurtleBot3" in run.out  # from the one now called Burger
-    after = SceneDocument.load(_scene(project))
-    burger = after.find_gameobject("Burger")
-    assert [c.type_name for c in after.components_of(burger)] == ["Transform"]
-    assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
+    assert run.out.endswith("wrote 0 files, removed 0\n")
+    assert _scene(project).read_bytes() == scene
+    assert (project / "robot.lock.json").read_bytes() == lock
 
 
 def test_a_declared_object_renamed_in_unity_is_reported_at_its_path_and_followed(
@@ -240,4 +278,52 @@ def test_a_declared_object_renamed_in_unity_is_reported_at_its_path_and_followed
     assert run_cli("apply", "--follow-renames", str(manifest)).code == 0
     assert manifest.read_text() == declared.replace("Base", "Chassis")
     assert _gameobject_count(project) == objects
+    assert run_cli("apply", "--check", str(manifest)).code == 0
+
+
+HEADER = "version: 1\nros: 2\nscene: Assets/Scenes/Main.unity\n"
+ODOM = "topics:\n  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe}\n"
+
+
+@pytest.mark.parametrize(
+    ("connector", "followed", "fix"),
+    [
+        # No `connector:` section: the RosConnector (and /odom on it) is at the default path.
+        ("", "connector: {gameobject: Bridge}\n", "add `connector: {gameobject: Bridge}` to the"),
+        (
+            "connector:\n  url: ws://robot:9090\n",
+            "connector:\n  gameobject: Bridge\n  url: ws://robot:9090\n",
+            "add `gameobject: Bridge` under `connector:`",
+        ),
+        (
+            "connector: {url: ws://robot:9090}\n",
+            "connector: {gameobject: Bridge, url: ws://robot:9090}\n",
+            "add `gameobject: Bridge` under `connector:`",
+        ),
+        # Written: /odom, with no gameobject of its own, follows with the connector's line.
+        ("connector: {gameobject: RosConnector}\n", "connector: {gameobject: Bridge}\n", ""),
+    ],
+)
+def test_a_renamed_rosconnector_the_manifest_leaves_at_its_default_is_followed_by_writing_it(
+    tmp_path: Path, connector: str, followed: str, fix: str
+) -> None:
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    project = tmp_path / "p"
+    manifest = project / "robot.yaml"
+    manifest.write_text(HEADER + connector + ODOM)
+    assert run_cli("apply", str(manifest)).code == 0
+    _rename(project, "RosConnector", "Bridge")
+    scene = _scene(project).read_bytes()
+    run = run_cli("apply", str(manifest))
+    assert run.code == 2
+    assert "`RosConnector` is now `Bridge` in Main.unity" in run.err
+    if fix:
+        assert f"so the RosConnector is looked for at its default `RosConnector`: {fix}" in run.err
+        assert "apply --follow-renames adds it for you" in run.err
+    else:
+        assert "rename it at robot.yaml:4\n" in run.err  # the connector's line, not /odom's
+    run = run_cli("apply", "--follow-renames", str(manifest))
+    assert run.code == 0, run.err
+    assert manifest.read_text() == HEADER + followed + ODOM
+    assert _scene(project).read_bytes() == scene
     assert run_cli("apply", "--check", str(manifest)).code == 0

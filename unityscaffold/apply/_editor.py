@@ -112,15 +112,13 @@ class SceneEditor:
         return go
 
     def record(self, go: GameObject) -> None:
-        """Remember the fileIDs of ``go`` and of every GameObject on its path."""
-        if go.path in self.plan.gameobjects:
-            return
-        names = go.path.split("/")
-        for level in range(1, len(names) + 1):
-            prefix = "/".join(names[:level])
-            if prefix not in self.plan.gameobjects:
-                found = go if level == len(names) else self.doc.find_gameobject(prefix)
-                self.plan.gameobjects[prefix] = found.file_id
+        """Remember the fileIDs of ``go`` and of every GameObject on its path (walked up by
+        parent, since a path on the way may be one of same-named siblings)."""
+        hierarchy = self.doc.hierarchy
+        node: int | None = go.file_id
+        while node is not None and hierarchy.paths[node] not in self.plan.gameobjects:
+            self.plan.gameobjects[hierarchy.paths[node]] = node
+            node = hierarchy.nodes[node].parent
 
     def attach(
         self,

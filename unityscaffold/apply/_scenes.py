@@ -20,7 +20,7 @@ from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._context import SceneContext, component_script
 from unityscaffold.apply._editor import SceneEditor, ScenePlan
 from unityscaffold.apply._facts import ScriptFacts
-from unityscaffold.apply._identity import Moved, Named, moved_objects, now_at, report_moves
+from unityscaffold.apply._identity import moved_objects, now_at, recorded_now
 from unityscaffold.apply._lock import LockFile
 from unityscaffold.apply._objects import (
     DeclaredObjects,
@@ -28,7 +28,8 @@ from unityscaffold.apply._objects import (
     declare_objects,
     set_builtin_references,
 )
-from unityscaffold.apply._references import paths_in, typed_reference
+from unityscaffold.apply._references import typed_reference
+from unityscaffold.apply._renames import follow
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
 from unityscaffold.manifest.model import (
@@ -50,56 +51,11 @@ from unityscaffold.unity.values import FieldValue
 __all__ = ["ScenePlan", "plan_scenes"]
 
 
-def _named(ctx: SceneContext, scene: str) -> list[Named]:
-    """Every GameObject path the manifest names in ``scene``, where it names it."""
-    m = ctx.manifest
-    found = []
-    if m.connector.scene == scene:
-        found.append(Named(m.connector.gameobject, m.connector.locations.of("gameobject")))
-    for script in ctx.code.scripts:
-        if script.item.scene == scene:
-            found.append(Named(script.item.gameobject, script.item.locations.of("gameobject")))
-    for entry in m.components:
-        if entry.scene != scene:
-            continue
-        found.append(Named(entry.gameobject, entry.locations.of("gameobject")))
-        for item in entry.fields:
-            found += [Named(p, item.location, True) for p in paths_in(item.value)]
-    for obj in m.objects:
-        if obj.scene != scene:
-            continue
-        found.append(Named(obj.path, obj.locations.of("path")))
-        for comp in obj.components:
-            for item in comp.fields:
-                found += [Named(p, item.location, True) for p in paths_in(item.value)]
-    return found
-
-
-def _follow(
-    ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: LockFile
-) -> dict[str, str]:
-    """Manifest path -> where its GameObject is now, for the ones Unity renamed or moved.
-
-    Without ``--follow-renames`` any such path stops apply with the lines to change.
-    """
-    moves = moved_objects(doc, lock.gameobjects_in(plan.relative))
-    if not moves:
-        return {}
-    moved = [
-        Moved(named, now)
-        for named in _named(ctx, plan.relative)
-        if (now := now_at(named.path, moves)) is not None
-    ]
-    if moved and not ctx.follow_renames:
-        raise report_moves(plan.relative, moved)
-    plan.followed += moved
-    return {m.named.path: m.now for m in moved}
-
-
 def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
     m = ctx.manifest
-    now = _follow(ctx, plan, doc, lock)
+    now = follow(ctx, plan, doc, lock)
     moves = moved_objects(doc, lock.gameobjects_in(plan.relative))
+    doc.prefer(recorded_now(doc, lock.gameobjects_in(plan.relative)))
     recorded = [c for c in lock.components if c.scene == plan.relative]
     owned = {(now_at(c.gameobject, moves) or c.gameobject, c.script) for c in recorded}
     editor = SceneEditor(plan, doc, owned, now)

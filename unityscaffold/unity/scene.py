@@ -60,6 +60,7 @@ class SceneDocument:
         # text, they never change a string): the original costs no copy of the file.
         self._original = [doc.text for doc in docs]
         self._checked: Links | None = None  # the link table of the last clean validation
+        self._preferred: dict[str, int] = {}  # path -> the one of same-named siblings meant
 
     @property
     def path(self) -> str:
@@ -199,6 +200,12 @@ class SceneDocument:
         if missing_at is not None:
             raise self._missing_error(path, found, missing_at)
         return self._view(self._unique(path, found))
+
+    def prefer(self, known: Mapping[str, int]) -> None:
+        """Tell same-named siblings apart: where a path, or a path on the way to it, matches
+        several GameObjects and one of them has the fileID ``known`` gives for that path, that
+        one is meant (apply passes the GameObjects its lock recorded)."""
+        self._preferred = dict(known)
 
     def components_of(self, go: GameObject | str) -> list[SceneComponent]:
         """Components of ``go`` in ``m_Component`` order (Transform first)."""
@@ -370,6 +377,9 @@ class SceneDocument:
             nxt = [c for parent in candidates for c in self.hierarchy.children_named(parent, name)]
             if not nxt:
                 return [c for c in candidates if c is not None], level
+            meant = self._preferred.get("/".join(names[: level + 1]))
+            if len(nxt) > 1 and meant in nxt:
+                nxt = [meant]
             candidates = list(nxt)
         return [c for c in candidates if c is not None], None
 
