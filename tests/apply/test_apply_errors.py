@@ -132,6 +132,22 @@ def test_a_binary_scene_is_refused(sample):
     _apply_fails(sample, "robot.yaml:8:", "Main.unity")
 
 
+def test_a_scene_document_new_objects_would_copy_is_refused_where_it_is_not_yaml(sample):
+    # A tab hides the first Transform's m_Children from a line-based reader: the new Robot/Sonar
+    # would copy a Transform without it.
+    scene = sample / "unity" / "Assets" / "Scenes" / "Main.unity"
+    lines = scene.read_text().splitlines(keepends=True)
+    assert lines[216] == "  m_Children: []\n"
+    lines[216] = "\tm_Children: []\n"
+    scene.write_text("".join(lines))
+    _edit(sample, "gameobject: Robot/Lidar}", "gameobject: Robot/Sonar}")
+    _apply_fails(
+        sample,
+        "Main.unity:217:1: error: --- !u!4 &705507995: is not valid YAML (found a tab character",
+        "new Transforms copy its layout",
+    )
+
+
 def test_a_missing_scene_is_refused(sample):
     _edit(sample, "scene: Assets/Scenes/Main.unity", "scene: Assets/Scenes/Nope.unity")
     _apply_fails(sample, "robot.yaml:8:", "scene Assets/Scenes/Nope.unity not found")

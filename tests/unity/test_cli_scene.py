@@ -221,6 +221,39 @@ def test_corrupt_scenes_are_refused_by_the_cli(
     assert [p.name for p in tmp_path.iterdir()] == ["Bad.unity"]
 
 
+def test_attach_refuses_a_scene_whose_document_a_new_object_would_copy_is_not_yaml(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # The first Transform is the layout new ones copy; a tab hides its m_Children from a
+    # line-based reader, so the new Robot's Transform would have none.
+    scene = tmp_path / "Bad.unity"
+    text = (DATA / "ros-sharp" / "ROSVersionSwitch.unity").read_text()
+    lines = text.splitlines(keepends=True)
+    assert lines[216] == "  m_Children: []\n"
+    lines[216] = "\tm_Children: []\n"
+    scene.write_text("".join(lines))
+    before = scene.read_bytes()
+    for flags in ([], ["--dry-run"]):
+        code, out, err = _run(
+            capsys,
+            "scene",
+            "attach",
+            scene,
+            "-g",
+            "Robot",
+            "--create",
+            "--guid",
+            CONNECTOR_GUID,
+            *flags,
+        )
+        assert code == 2, out
+        assert err.startswith(
+            f"{scene}:217:1: error: --- !u!4 &705507995: is not valid YAML (found a tab character "
+            "that violates indentation); new Transforms copy its layout\n"
+        )
+        assert scene.read_bytes() == before
+
+
 def test_attach_help_documents_the_reference_syntax(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, _ = _run(capsys, "scene", "attach", "--help")
     assert code == 0

@@ -25,6 +25,7 @@ from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._emit import emit_field, value_equals
 from unityscaffold.unity._fileids import stable_file_id
 from unityscaffold.unity._split import Doc
+from unityscaffold.unity._validate import check_exemplar
 from unityscaffold.unity.index import GameObject, SceneComponent
 from unityscaffold.unity.values import FieldValue, ScriptRef, Verbatim
 
@@ -106,15 +107,26 @@ def _require_editable(docs: Documents, go: GameObject) -> None:
 
 
 def _exemplar(docs: Documents, class_id: int) -> Doc | None:
-    """An existing object of the class, not from a prefab, whose layout new ones copy."""
+    """An existing object of the class, not from a prefab, whose layout new ones copy; one that
+    is not valid YAML is refused, located, rather than copied with its fault."""
     for doc in docs.in_order:
         if doc.class_id == class_id and not doc.stripped:
             source = F.ref_value(doc, "m_CorrespondingSourceObject") or F.ref_value(
                 doc, "m_PrefabParentObject"
             )
             if not source:
+                _require_sound(docs, doc)
                 return doc
     return None
+
+
+def _require_sound(docs: Documents, doc: Doc) -> None:
+    if doc.cache.get("sound"):  # the cache goes with any edit of the document's text
+        return
+    problems = check_exemplar(docs.path, docs.prolog, docs.in_order, doc)
+    if problems:
+        raise LocatedError(problems)
+    doc.cache["sound"] = True
 
 
 def _emit(docs: Documents, name: str, value: FieldValue) -> list[str]:

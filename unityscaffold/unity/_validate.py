@@ -22,7 +22,7 @@ from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity._links import Links
 from unityscaffold.unity._split import Doc, is_reference_list
 
-__all__ = ["check_docs", "validate_docs"]
+__all__ = ["check_docs", "check_exemplar", "validate_docs"]
 
 _BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
@@ -34,7 +34,16 @@ class _Locator:
         self.path, self.prolog, self.docs = path, prolog, docs
         self._lines: dict[int, int] | None = None
 
-    def at(self, doc: Doc, key: str | None, message: str, hint: str | None = None) -> Diagnostic:
+    def at(
+        self,
+        doc: Doc,
+        key: str | None,
+        message: str,
+        hint: str | None = None,
+        within: tuple[int, int] | None = None,
+    ) -> Diagnostic:
+        """``message`` at ``key``'s line in ``doc`` (its header without one), or at
+        ``within``: (line, column) counted from 0 after the document's header line."""
         if self._lines is None:
             line, self._lines = self.prolog.count("\n") + 1, {}
             for each in self.docs:
@@ -43,6 +52,11 @@ class _Locator:
         line = self._lines.get(id(doc), 0)
         source, col = doc.header, 1
         start, col = _key_offset(doc, key) if key else (-1, 1)
+        if within is not None and line:
+            rows = doc.text.split("\n")[:-1]  # each row ends with a line break
+            row = min(within[0] + 1, len(rows) - 1)  # a fault found at the end: the last row
+            start = sum(len(r) + 1 for r in rows[:row])
+            col = within[1] + 1 if row == within[0] + 1 else 1
         if start >= 0 and line:
             line += doc.text.count("\n", 0, start)
             source = doc.text[start : doc.text.index("\n", start)]
@@ -301,13 +315,37 @@ def _scene_roots(loc: _Locator, links: Links, docs: Sequence[Doc]) -> list[Diagn
     ]
 
 
-def _parses(loc: _Locator, doc: Doc) -> list[Diagnostic]:
+def check_exemplar(path: str, prolog: str, docs: Sequence[Doc], doc: Doc) -> list[Diagnostic]:
+    """Problems of ``doc``, whose layout a new object of its class is about to copy: it must be
+    valid YAML, or the copy inherits what is broken (a key a bad indent hid, left out).
+
+    Unchanged documents are otherwise not parsed (a whole-file parse would cost more than the
+    edit); this one is, since the new object would carry its fault into a document apply made.
+    """
+    return _parses(
+        _Locator(path, prolog, docs),
+        doc,
+        f"new {doc.type_name}s copy its layout",
+        hint="fix it (in Unity, or from version control) and run again",
+    )
+
+
+def _parses(
+    loc: _Locator,
+    doc: Doc,
+    why: str = "after editing",
+    hint: str | None = None,
+) -> list[Diagnostic]:
     body = doc.text[doc.text.index("\n") + 1 :]
     if is_reference_list(body):
         return []  # SceneRoots gaining a root: no YAML parse of a list with a line per root
     try:
         yaml.load(body, Loader=_BaseLoader)
     except yaml.YAMLError as exc:
-        message = str(exc).strip().split("\n")[0]
-        return [loc.at(doc, None, f"is not valid YAML after editing ({message})")]
+        mark = getattr(exc, "problem_mark", None)
+        problem = getattr(exc, "problem", None) or str(exc).strip().split("\n")[0]
+        within = (mark.line, mark.column) if mark is not None else None
+        if why == "after editing":
+            return [loc.at(doc, None, f"is not valid YAML after editing ({problem})", hint, within)]
+        return [loc.at(doc, None, f"is not valid YAML ({problem}); {why}", hint, within)]
     return []
