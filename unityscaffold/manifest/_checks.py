@@ -1,4 +1,5 @@
-"""Checks across entries: duplicate names, clashing generated classes, repeated components."""
+"""Checks across entries: duplicate names, clashing generated classes, repeated components,
+topics that publish on a ROS 1 action's own topics."""
 
 from __future__ import annotations
 
@@ -6,7 +7,15 @@ from collections.abc import Sequence
 
 from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest._read import Reader
-from unityscaffold.manifest.model import Action, Component, SceneObject, Service, Topic
+from unityscaffold.manifest.model import (
+    Action,
+    Component,
+    Direction,
+    Role,
+    SceneObject,
+    Service,
+    Topic,
+)
 
 __all__ = ["check_across"]
 
@@ -115,6 +124,61 @@ def _object_repeats(r: Reader, objects: Sequence[SceneObject]) -> None:
             kinds.setdefault((b.type, b.key), b.location)
 
 
+# actionlib's topics under a ROS 1 action's name, by the side that publishes each
+_ACTION_TOPICS = {
+    "goal": Role.CLIENT,
+    "cancel": Role.CLIENT,
+    "status": Role.SERVER,
+    "feedback": Role.SERVER,
+    "result": Role.SERVER,
+}
+# what a second publisher beside the action's own script would put on each
+_INTRUDES = {
+    "goal": "goals its client does not track",
+    "cancel": "cancels of goals its client tracks",
+    "status": "status lists of goals its server does not hold (a client reads each list as the "
+    "server's whole state)",
+    "feedback": "feedback for goals its server does not carry out",
+    "result": "results for goals its server does not carry out",
+}
+
+
+def _action_topic_publishers(r: Reader, topics: Sequence[Topic], actions: Sequence[Action]) -> None:
+    """ROS 1: a topic that publishes on one of an action's five topics, beside that action.
+
+    One listening (a subscriber on its feedback or status) is left alone: it adds nothing to
+    the wire. One publishing would mix its messages into the action's own streams.
+    """
+    owners: dict[str, tuple[Action, str]] = {}
+    for action in actions:
+        for part in _ACTION_TOPICS:
+            owners.setdefault(f"{_graph_name(action.name).rstrip('/')}/{part}", (action, part))
+    for topic in topics:
+        found = owners.get(_graph_name(topic.name))
+        if topic.direction is not Direction.PUBLISH or found is None:
+            continue
+        action, part = found
+        side = _ACTION_TOPICS[part]
+        line = action.locations.item.line
+        if side is action.role:
+            said = f"which its {side.value} (line {line}) publishes already"
+            hint = f"drop this entry: the action's script publishes {part} itself"
+        else:
+            said = (
+                f"which its {side.value} publishes (Unity is its {action.role.value}, line {line})"
+            )
+            hint = (
+                f"drop this entry: Unity would stand in for the action's {side.value} to its own "
+                f"{action.role.value}"
+            )
+        r.error(
+            topic.locations.of("name"),
+            f"topic '{topic.name}' is the {part} topic of action '{action.name}', {said}; "
+            f"publishing on it too would add {_INTRUDES[part]}",
+            hint=hint,
+        )
+
+
 def check_across(
     r: Reader,
     topics: Sequence[Topic],
@@ -122,6 +186,8 @@ def check_across(
     components: Sequence[Component],
     objects: Sequence[SceneObject] = (),
     actions: Sequence[Action] = (),
+    *,
+    ros: int | None = None,
 ) -> None:
     kinds: tuple[tuple[str, Sequence[Entry]], ...] = (
         ("topic", topics),
@@ -133,5 +199,7 @@ def check_across(
         repeated = _duplicates(r, items, label)
         generated += [(label, item) for i, item in enumerate(items) if i not in repeated]
     _class_clashes(r, generated)
+    if ros == 1:  # a ROS 2 action travels as rosbridge's action operations, not as topics
+        _action_topic_publishers(r, topics, actions)
     _component_repeats(r, components)
     _object_repeats(r, objects)

@@ -122,7 +122,9 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     good_actions = tuple(a for a in actions if a is not None)
     good_components = tuple(c for c in components if c is not None)
     good_objects = tuple(o for o in objects if o is not None)
-    check_across(r, good_topics, good_services, good_components, good_objects, good_actions)
+    check_across(
+        r, good_topics, good_services, good_components, good_objects, good_actions, ros=ros
+    )
     if version is None or ros is None:
         return None
     include = r.boolean(top, "include_shipped")
