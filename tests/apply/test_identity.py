@@ -327,3 +327,26 @@ def test_a_renamed_rosconnector_the_manifest_leaves_at_its_default_is_followed_b
     assert manifest.read_text() == HEADER + followed + ODOM
     assert _scene(project).read_bytes() == scene
     assert run_cli("apply", "--check", str(manifest)).code == 0
+
+
+def test_an_entry_on_the_default_gameobject_in_another_scene_is_told_to_name_it(
+    tmp_path: Path,
+) -> None:
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    project = tmp_path / "p"
+    other = project / "Assets" / "Scenes" / "Other.unity"
+    other.write_bytes(_scene(project).read_bytes())
+    manifest = project / "robot.yaml"
+    manifest.write_text(
+        HEADER + "topics:\n  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe,\n"
+        "     scene: Assets/Scenes/Other.unity}\n"
+    )
+    assert run_cli("apply", str(manifest)).code == 0
+    other.write_text(other.read_text().replace("  m_Name: RosConnector\n", "  m_Name: Bridge\n"))
+    before = snapshot(project)
+    for flags in ([], ["--follow-renames"]):
+        run = run_cli("apply", *flags, str(manifest))
+        assert run.code == 2
+        assert "robot.yaml:5:5: error: `RosConnector` is now `Bridge`" in run.err
+        assert "add `gameobject: Bridge` to this entry" in run.err
+        assert snapshot(project) == before

@@ -140,7 +140,7 @@ _IMPLIED: dict[Implied, str] = {
     "its default",
     "connector": "`connector:` has no `gameobject`, so the RosConnector is looked for at its "
     "default",
-    "entry": "this entry has no `gameobject`, so it goes on the RosConnector's default",
+    "entry": "this entry has no `gameobject`, so it takes the RosConnector's,",
 }
 
 
