@@ -223,8 +223,8 @@ def test_a_renamed_gameobject_whose_old_path_another_one_took_stops_apply_naming
         assert run.code == 2, run.out
         assert (
             f"robot.yaml:{ROBOT_LINE}:78: error: `TurtleBot3` is now `Old` in Main.unity "
-            "(renamed or moved in Unity since the last apply; `TurtleBot3` there now is another "
-            "GameObject); rename it at robot.yaml:7, robot.yaml:13" in run.err
+            "(renamed or moved in Unity since the last apply; another GameObject is at "
+            "`TurtleBot3` now); rename it at robot.yaml:7, robot.yaml:13" in run.err
         )
         assert "`TurtleBot3/Lidar` is now `Old/Lidar`" in run.err
         assert snapshot(project) == before

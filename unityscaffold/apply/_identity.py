@@ -124,7 +124,7 @@ def report_moves(scene: str, moved: list[Moved]) -> LocatedError:
             continue
         lines = ", ".join(sorted({_line(m.named.location) for m in items}, key=_line_key))
         replaced = any(m.replaced for m in items)
-        taken = f"; `{old}` there now is another GameObject" if replaced else ""
+        taken = f"; another GameObject is at `{old}` now" if replaced else ""
         problems.append(
             Diagnostic(
                 where,
