@@ -105,8 +105,10 @@ def register(app: typer.Typer) -> None:
             False,
             "--follow-renames",
             help="A GameObject apply made or used that was renamed or moved in Unity since: "
-            "keep using it where it is now and rewrite the manifest's lines to its new path. "
-            "Without it apply stops and names those lines (it never creates a second one).",
+            "keep using it where it is now and rewrite the manifest's lines to its new path "
+            "(for a RosConnector left at its default, add connector: {gameobject: NEW}). "
+            "Without it apply stops and names those lines (it never creates a second one, nor "
+            "takes another object that now has the old name).",
         ),
         ros_env: bool = RosEnvOption,
         as_json: bool = JsonOption,
