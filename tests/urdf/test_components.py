@@ -9,7 +9,6 @@ from pathlib import Path
 
 import pytest
 
-from unityscaffold.errors import LocatedError
 from unityscaffold.unity import SceneDocument
 from unityscaffold.unity._emit import value_equals
 from unityscaffold.unity.catalog import rossharp_catalog
@@ -161,13 +160,19 @@ def test_a_missing_axis_is_rossharps_default_and_missing_dynamics_leave_the_spri
     assert hinge.field("m_Spring") is None
 
 
-def test_a_non_diagonal_inertia_is_refused_not_guessed() -> None:
+def test_a_non_diagonal_inertia_gets_its_principal_moments_in_unitys_axes() -> None:
     robot = parse_urdf(
         b'<robot name="r"><link name="p"><inertial><mass value="1"/>'
-        b'<inertia ixx="1" ixy="0.1" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link></robot>'
+        b'<inertia ixx="2" ixy="1" ixz="0" iyy="2" iyz="0" izz="5"/></inertial></link></robot>'
     )
-    with pytest.raises(LocatedError, match=r"products of inertia .* not supported yet"):
-        importer_tree(robot)
+    body = importer_tree(robot).children[1].components[1]
+    tensor, rotation = body.field("m_InertiaTensor"), body.field("m_InertiaRotation")
+    assert isinstance(tensor, InlineMap) and isinstance(rotation, InlineMap)
+    # ROS#'s order of Smith's eigenvalues (5, 1, 3), then (y, z, x)
+    assert [v for _, v in tensor.items] == pytest.approx([1, 3, 5], abs=1e-6)
+    assert [v for _, v in rotation.items] == pytest.approx(
+        [0.27059802, -0.65328151, -0.65328139, -0.27059805], abs=1e-6
+    )
 
 
 def test_tiny_moments_are_raised_to_rossharps_minimum() -> None:

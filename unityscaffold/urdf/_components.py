@@ -14,9 +14,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TypeAlias
 
-from unityscaffold.errors import LocatedError
 from unityscaffold.unity.values import AssetRef, Enum, FieldValue, InlineMap
 from unityscaffold.urdf import transforms as t
+from unityscaffold.urdf._inertia import principal_axes
 from unityscaffold.urdf.model import (
     Box,
     Cylinder,
@@ -152,22 +152,13 @@ def _inertial_components(inertial: Inertial, key: str) -> list[ImportedComponent
 
 
 def _principal_inertia(inertial: Inertial) -> tuple[InlineMap, InlineMap]:
-    """The inertia tensor's principal moments (Unity's axes) and their rotation.
-
-    A diagonal tensor (the common case) is its own principal form, as in ROS#'s
-    ``Matrix3x3.DiagonalizeRealSymmetric``; ROS# raises each moment to at least 1e-6.
-    """
+    """The inertia tensor's principal moments (Unity's axes, each at least ROS#'s 1e-6) and
+    the rotation of the principal axes (``_inertia``, then ROS→Unity: ``(y, -z, -x, w)``)."""
     i = inertial.inertia
-    if any(t.f32(v) != 0 for v in (i.ixy, i.ixz, i.iyz)):
-        raise LocatedError.at(
-            inertial.location,
-            "an inertia tensor with products of inertia (ixy, ixz, iyz) is not supported yet",
-            hint="give the link's principal moments with ixy, ixz and iyz 0, rotating the "
-            "inertial <origin> instead",
-        )
-    xx, yy, zz = (max(t.f32(v), _MIN_INERTIA) for v in (i.ixx, i.iyy, i.izz))
-    # the identity eigenvectors as ROS#'s quaternion (0, 0, 0, 1), then Ros2Unity: (y, -z, -x, w)
-    return _vector((yy, zz, xx)), _quaternion((0.0, -0.0, -0.0, 1.0))
+    xx, xy, xz, yy, yz, zz = (t.f32(v) for v in (i.ixx, i.ixy, i.ixz, i.iyy, i.iyz, i.izz))
+    values, (qx, qy, qz, qw) = principal_axes(((xx, xy, xz), (xy, yy, yz), (xz, yz, zz)))
+    x, y, z = (max(v, _MIN_INERTIA) for v in values)
+    return _vector((y, z, x)), _quaternion((qy, -qz, -qx, qw))
 
 
 def joint_components(joint: Joint, key: str, parent_key: str) -> list[ImportedComponent]:
