@@ -117,6 +117,11 @@ def test_a_missing_required_attribute_or_element_is_located(
             "value",
         ),
         ('<material name="m"><color rgba="1 1 1"/></material><link name="a"/>', 27, "rgba"),
+        (
+            '<link name="a"><visual><geometry><sphere radius="1e39"/></geometry></visual></link>',
+            42,
+            "radius",
+        ),
     ],
 )
 def test_a_bad_number_is_located_at_its_attribute(body: str, col: int, attribute: str) -> None:

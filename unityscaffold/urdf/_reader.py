@@ -22,6 +22,7 @@ __all__ = ["read_robot"]
 
 T = TypeVar("T")
 _NUMBER_RE = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_FLOAT32_MAX = 3.4028234663852886e38
 _NOT_PLUGINS = frozenset({"link", "joint", "material"})
 
 
@@ -67,7 +68,7 @@ class _Reader:
             raise self.error(
                 element.attribute_offset(name),
                 f'{name}="{element.get(name)}" on <{element.tag}> is not {count} numbers',
-                hint=f"write {count} decimal numbers separated by spaces",
+                hint=f"write {count} decimal numbers (within ±3.4e38) separated by spaces",
             )
         return tuple(v for v in values if v is not None)
 
@@ -86,7 +87,11 @@ class _Reader:
 
     @staticmethod
     def _number(word: str) -> float | None:
-        return float(word) if _NUMBER_RE.fullmatch(word) else None
+        if not _NUMBER_RE.fullmatch(word):
+            return None
+        value = float(word)
+        # Unity stores float32: a larger number cannot be imported
+        return value if abs(value) <= _FLOAT32_MAX else None
 
     def gather(self, read: Callable[[Element], T], elements: list[Element]) -> tuple[T, ...]:
         """``read`` over ``elements``, keeping those that read without problems."""
