@@ -3,6 +3,7 @@ the two COLLADA models ROS#'s r2d2 sample references."""
 
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 
@@ -17,8 +18,12 @@ from unityscaffold.unity.modelids import (
     xxhash64,
 )
 
-SAMPLE = Path(__file__).resolve().parents[2].parent / "shared/vendor/ros-sharp/samples"
-STEP1 = SAMPLE / "gazebo-ros2-step1"
+VENDOR = Path(
+    os.environ.get(
+        "UNITYSCAFFOLD_VENDOR", Path(__file__).resolve().parents[2].parent / "shared/vendor"
+    )
+)
+STEP1 = VENDOR / "ros-sharp/samples/gazebo-ros2-step1"
 
 
 @pytest.mark.parametrize(
