@@ -86,17 +86,23 @@ def _one_root_no_cycle(robot: Robot, sink: DiagnosticSink) -> None:
                 f"link {link.name!r} is a second root (no joint has it as child); roots: {names}",
                 hint="connect every link but one to a parent with a <joint>",
             )
+    _no_cycle(robot, sink)
+
+
+def _no_cycle(robot: Robot, sink: DiagnosticSink) -> None:
+    """Walk up from every link once; a walk that comes back to itself is a cycle."""
     parent_of = {joint.child: joint for joint in robot.joints}
-    in_cycle: set[str] = set()
+    settled: set[str] = set()  # links already known to reach a root or a reported cycle
     for joint in robot.joints:
-        path = [joint.child]
+        path: dict[str, None] = {joint.child: None}  # ordered, with O(1) membership
         current = joint.parent
-        while current in parent_of and current not in path and current not in in_cycle:
-            path.append(current)
+        while current in parent_of and current not in path and current not in settled:
+            path[current] = None
             current = parent_of[current].parent
-        if current in path and current not in in_cycle:
-            cycle = path[path.index(current) :]
-            in_cycle.update(cycle)
+        walked = list(path)
+        settled.update(walked)
+        if current in path:
+            cycle = walked[walked.index(current) :]
             loop = " → ".join([*reversed(cycle), cycle[-1]])
             sink.error(
                 parent_of[current].location,

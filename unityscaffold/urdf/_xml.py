@@ -7,6 +7,7 @@ and text exactly as written (ROS#'s importer keeps plugin elements as text, see 
 
 from __future__ import annotations
 
+import bisect
 import re
 import xml.parsers.expat as expat
 from dataclasses import dataclass, field
@@ -16,15 +17,39 @@ from unityscaffold.errors import LocatedError, SourceLocation
 __all__ = ["Comment", "Element", "Text", "XmlSource", "parse_xml"]
 
 
-@dataclass(frozen=True, slots=True)
 class XmlSource:
-    """A file's path and raw bytes: turns byte offsets into ``SourceLocation`` values."""
+    """A file's path and raw bytes: turns byte offsets into ``SourceLocation`` values.
 
-    path: str
-    raw: bytes
+    Every element of the model carries one, so the line table is built once and each line
+    decoded once (``SourceLocation.at_byte`` rescans the file up to the offset every time).
+    """
+
+    __slots__ = ("_lines", "_texts", "path", "raw")
+
+    def __init__(self, path: str, raw: bytes) -> None:
+        self.path = path
+        self.raw = raw
+        self._lines: list[int] | None = None  # the offset where each line starts
+        self._texts: dict[int, tuple[str, bool]] = {}  # line → its text, whether ASCII
 
     def at(self, offset: int) -> SourceLocation:
-        return SourceLocation.at_byte(self.path, self.raw, offset)
+        if self._lines is None:
+            self._lines = [0] + [m.end() for m in re.finditer(rb"\n", self.raw)]
+        line = bisect.bisect_right(self._lines, offset) - 1
+        start = self._lines[line]
+        text, ascii_only = self._line(line, start)
+        if ascii_only:
+            column = offset - start + 1
+        else:
+            column = len(self.raw[start:offset].decode("utf-8", "replace")) + 1
+        return SourceLocation(self.path, line + 1, column, text)
+
+    def _line(self, line: int, start: int) -> tuple[str, bool]:
+        if line not in self._texts:
+            end = self.raw.find(b"\n", start)
+            chunk = self.raw[start : end if end >= 0 else len(self.raw)]
+            self._texts[line] = (chunk.decode("utf-8", "replace").rstrip("\r"), chunk.isascii())
+        return self._texts[line]
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,6 +94,7 @@ class Element:
 
 
 _ATTRIBUTE_RE = re.compile(rb"""\s([^\s=/>]+)\s*=\s*("[^"]*"|'[^']*')""")
+_START_TAG_RE = re.compile(rb"""<[^\s/>]+(?:\s+[^\s=/>]+\s*=\s*(?:"[^"]*"|'[^']*'))*\s*/?>""")
 
 
 class _Builder:
@@ -103,12 +129,13 @@ class _Builder:
             self.root = element
 
     def _attribute_offsets(self, offset: int, names: list[str]) -> tuple[int, ...]:
+        """Where each attribute of the start tag at ``offset`` is written (expat tells only
+        where the tag starts)."""
+        tag = _START_TAG_RE.match(self.raw, offset) if names else None
         found: dict[str, int] = {}
-        for match in _ATTRIBUTE_RE.finditer(self.raw, offset):
-            key = match.group(1).decode("utf-8", "replace")
-            found.setdefault(key, match.start(1))
-            if len(found) == len(names):
-                break
+        if tag is not None:
+            for match in _ATTRIBUTE_RE.finditer(self.raw, offset, tag.end()):
+                found.setdefault(match.group(1).decode("utf-8", "replace"), match.start(1))
         return tuple(found.get(name, offset) for name in names)
 
     def text(self, data: str) -> None:

@@ -42,10 +42,14 @@ def importer_materials(robot: Robot) -> dict[str, str]:
     }
 
 
-def _visual_materials(robot: Robot, link: Link) -> Iterator[Material]:
+def _visual_materials(robot: Robot, root: Link) -> Iterator[Material]:
     """Visual materials in the order ROS# builds the links (depth first, by joint order)."""
-    for visual in link.visuals:
-        if visual.material is not None:
-            yield visual.material
-    for joint in robot.child_joints(link.name):
-        yield from _visual_materials(robot, robot.link(joint.child))
+    named = {link.name: link for link in reversed(robot.links)}  # the first of a name wins
+    children: dict[str, list[str]] = {}
+    for joint in robot.joints:
+        children.setdefault(joint.parent, []).append(joint.child)
+    stack = [root]
+    while stack:
+        link = stack.pop()
+        yield from (visual.material for visual in link.visuals if visual.material is not None)
+        stack += [named[child] for child in reversed(children.get(link.name, []))]

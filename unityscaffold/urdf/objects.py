@@ -125,18 +125,33 @@ def importer_tree(robot: Robot, *, plugin_newline: str = "\r\n") -> ImportedObje
     plugins = ImportedObject(
         "Plugins", Role.PLUGINS, "plugins", LocalTransform(), tuple(plugin_components(texts))
     )
-    root = _link(robot, robot.root, None, parent_key=None)
+    root = _link(_Links(robot), robot.root, None, parent_key=None)
     # a new GameObject, placed where the user's selection is: not ROS#'s alignment
     placed = LocalTransform(rotation=t.IDENTITY)
     robot_script = (ImportedComponent("UrdfRobot"),)
     return ImportedObject(robot.name, Role.ROBOT, "robot", placed, robot_script, (plugins, root))
 
 
+class _Links:
+    """The robot's links by name (the first of a name, as ROS# finds it) and the joints
+    under each link in document order: looked up once per link, not searched."""
+
+    def __init__(self, robot: Robot) -> None:
+        self.index: dict[str, int] = {}
+        self.named: dict[str, Link] = {}
+        for i, link in enumerate(robot.links):
+            self.index.setdefault(link.name, i)
+            self.named.setdefault(link.name, link)
+        self.children: dict[str, list[Joint]] = {name: [] for name in self.named}
+        for joint in robot.joints:
+            self.children[joint.parent].append(joint)
+
+
 def _link(
-    robot: Robot, link: Link, joint: Joint | None, *, parent_key: str | None
+    links: _Links, link: Link, joint: Joint | None, *, parent_key: str | None
 ) -> ImportedObject:
     """A link; ``parent_key`` is the parent link's key when that link has a Rigidbody."""
-    key = f"link[{robot.links.index(link)}]"
+    key = f"link[{links.index[link.name]}]"
     components = link_components(link, key, has_joint=joint is not None)
     if link.inertial is not None and joint is not None and parent_key is not None:
         components += joint_components(joint, key, parent_key)
@@ -162,7 +177,7 @@ def _link(
     )
     body = key if link.inertial is not None else None
     children = tuple(
-        _link(robot, robot.link(j.child), j, parent_key=body) for j in robot.child_joints(link.name)
+        _link(links, links.named[j.child], j, parent_key=body) for j in links.children[link.name]
     )
     return ImportedObject(
         link.name, Role.LINK, key, pose, tuple(components), (visuals, collisions, *children)
