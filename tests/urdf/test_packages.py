@@ -75,5 +75,29 @@ def test_every_unresolvable_mesh_is_reported_at_its_line(project: Path, tmp_path
     ]
     assert "no folder for package 'nowhere'" in rendered[0] and "(given: desc, far)" in rendered[0]
     assert "no file" in rendered[1] and "missing.stl" in rendered[1]
-    assert "is outside the project" in rendered[2] and "is outside the project" in rendered[3]
+    assert "is outside the project" in rendered[2]
+    assert "steps out of its package with '..'" in rendered[3]
     assert "names no ROS package" in rendered[4] and "package://<package>/<path>" in rendered[4]
+
+
+def test_a_mesh_path_with_dotdot_inside_the_project_is_refused_as_its_assets_would_escape(
+    project: Path,
+) -> None:
+    # the path inside the package is where the mesh's assets go under the robot's folder:
+    # desc/../../ros/desc/meshes/arm_0.asset would land beside that folder
+    robot = parse_urdf(
+        robot_with_meshes("package://desc/../../ros/desc/meshes/arm.stl", "package://../m.stl"),
+        "robot.urdf",
+    )
+    packages = {"desc": project / "ros" / "desc"}
+    with pytest.raises(LocatedError) as caught:
+        resolve_meshes(
+            robot, urdf=project / "ros" / "robot.urdf", packages=packages, project=project
+        )
+    rendered = [d.render() for d in caught.value.diagnostics]
+    assert [text.split(": error: ")[0] for text in rendered] == [
+        "robot.urdf:3:19",
+        "robot.urdf:4:19",
+    ]
+    assert all("steps out of its package with '..'" in text for text in rendered)
+    assert all("hint: name the mesh by its package" in text for text in rendered)

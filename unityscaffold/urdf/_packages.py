@@ -51,6 +51,15 @@ def resolve_mesh(
         return None
     package = match.group(1) or match.group(3)
     relative = PurePosixPath(match.group(2) or match.group(4))
+    # the path inside the package is also where the mesh's assets go under the robot's asset
+    # folder: a '..' would put them beside it, or outside the project
+    if package in (".", "..") or ".." in relative.parts:
+        sink.error(
+            where,
+            f"mesh {mesh.filename!r} steps out of its package with '..'",
+            hint="name the mesh by its package and a path inside it: package://<package>/<path>",
+        )
+        return None
     folder = _package_folder(package, urdf, packages)
     if folder is None:
         known = ", ".join(sorted(packages)) or "none"
