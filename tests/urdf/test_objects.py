@@ -210,3 +210,21 @@ def test_plugin_texts_are_the_ones_rossharp_stored_with_the_importing_machines_n
     stored = [scene.field(c, "PluginText") for c in plugins]
     ours = [p.text.replace("\n", "\r\n") for p in read_urdf(r2d2_urdf).plugins]
     assert len(ours) == 4 and stored == ours
+
+
+def test_a_serial_chain_deeper_than_pythons_stack_is_built_link_under_link() -> None:
+    # a long chain (a cable, a snake robot) nests each link under the last: building it
+    # recursively went past Python's recursion limit at about 500 links
+    count = 1500
+    links = "".join(f'<link name="l{i}">{INERTIAL}</link>' for i in range(count))
+    joints = "".join(
+        f'<joint name="j{i}" type="fixed"><parent link="l{i - 1}"/><child link="l{i}"/></joint>'
+        for i in range(1, count)
+    )
+    tree = importer_tree(parse_urdf(f'<robot name="chain">{links}{joints}</robot>'.encode()))
+    chain = [(depth, o.name) for depth, o in tree.walk() if o.name.startswith("l")]
+    assert chain == [(i + 1, f"l{i}") for i in range(count)]
+    deepest = next(o for _, o in tree.walk() if o.name == f"l{count - 1}")
+    assert deepest.key == f"link[{count - 1}]"
+    assert "FixedJoint" in deepest.component_names
+    assert [o.name for o in deepest.children] == ["Visuals", "Collisions"]

@@ -110,10 +110,14 @@ class ImportedObject:
         return [component.name for component in self.components]
 
     def walk(self, depth: int = 0) -> list[tuple[int, ImportedObject]]:
-        """This object and everything under it, depth first, with their depths."""
-        found = [(depth, self)]
-        for child in self.children:
-            found += child.walk(depth + 1)
+        """This object and everything under it, depth first, with their depths (without
+        recursion, as a long chain of links is deeper than Python's stack)."""
+        found: list[tuple[int, ImportedObject]] = []
+        pending = [(depth, self)]
+        while pending:
+            level, item = pending.pop()
+            found.append((level, item))
+            pending.extend((level + 1, child) for child in reversed(item.children))
         return found
 
 
@@ -125,7 +129,7 @@ def importer_tree(robot: Robot, *, plugin_newline: str = "\r\n") -> ImportedObje
     plugins = ImportedObject(
         "Plugins", Role.PLUGINS, "plugins", LocalTransform(), tuple(plugin_components(texts))
     )
-    root = _link(_Links(robot), robot.root, None, parent_key=None)
+    root = _links_tree(_Links(robot), robot.root)
     # a new GameObject, placed where the user's selection is: not ROS#'s alignment
     placed = LocalTransform(rotation=t.IDENTITY)
     robot_script = (ImportedComponent("UrdfRobot"),)
@@ -146,12 +150,41 @@ class _Links:
         for joint in robot.joints:
             self.children[joint.parent].append(joint)
 
+    def key(self, link: Link) -> str:
+        return f"link[{self.index[link.name]}]"
+
+
+def _links_tree(links: _Links, root: Link) -> ImportedObject:
+    """The root link and everything under it, children built before their parents without
+    recursion (a serial chain of some 500 links went past Python's recursion limit)."""
+    visits: list[tuple[Link, Joint | None, str | None]] = []
+    pending: list[tuple[Link, Joint | None, str | None]] = [(root, None, None)]
+    while pending:
+        link, joint, parent_key = pending.pop()
+        visits.append((link, joint, parent_key))
+        body = links.key(link) if link.inertial is not None else None
+        for child in reversed(links.children[link.name]):
+            pending.append((links.named[child.child], child, body))
+    built: dict[str, ImportedObject] = {}
+    for link, joint, parent_key in reversed(visits):  # every child before its parent
+        children = tuple(
+            built.pop(links.key(links.named[j.child])) for j in links.children[link.name]
+        )
+        built[links.key(link)] = _link(links, link, joint, parent_key=parent_key, children=children)
+    return built[links.key(root)]
+
 
 def _link(
-    links: _Links, link: Link, joint: Joint | None, *, parent_key: str | None
+    links: _Links,
+    link: Link,
+    joint: Joint | None,
+    *,
+    parent_key: str | None,
+    children: tuple[ImportedObject, ...],
 ) -> ImportedObject:
-    """A link; ``parent_key`` is the parent link's key when that link has a Rigidbody."""
-    key = f"link[{links.index[link.name]}]"
+    """A link with its child links already built; ``parent_key`` is the parent link's key
+    when that link has a Rigidbody."""
+    key = links.key(link)
     components = link_components(link, key, has_joint=joint is not None)
     if link.inertial is not None and joint is not None and parent_key is not None:
         components += joint_components(joint, key, parent_key)
@@ -174,10 +207,6 @@ def _link(
         (ImportedComponent("UrdfCollisions"),),
         tuple(_part(c, f"{key}/collision[{i}]") for i, c in enumerate(link.collisions)),
         not_editable=True,
-    )
-    body = key if link.inertial is not None else None
-    children = tuple(
-        _link(links, links.named[j.child], j, parent_key=body) for j in links.children[link.name]
     )
     return ImportedObject(
         link.name, Role.LINK, key, pose, tuple(components), (visuals, collisions, *children)
