@@ -109,3 +109,15 @@ def test_a_bad_number_in_an_ascii_stl_is_located_at_its_line(tmp_path: Path) -> 
     with pytest.raises(LocatedError) as caught:
         read_stl(path)
     assert caught.value.render().startswith(f"{path}:4:1: error: expected three numbers")
+
+
+def test_a_number_beyond_float32_in_an_ascii_stl_is_located_at_its_line(tmp_path: Path) -> None:
+    path = tmp_path / "huge.stl"
+    path.write_text(
+        "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1e40 0 0\n", encoding="ascii"
+    )
+    with pytest.raises(LocatedError) as caught:
+        read_stl(path)
+    rendered = caught.value.render()
+    assert rendered.startswith(f"{path}:5:1: error: a number in this ASCII STL line is beyond")
+    assert "hint: check the mesh's units" in rendered

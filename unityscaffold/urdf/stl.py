@@ -89,6 +89,7 @@ def _binary(raw: bytes, path: str) -> list[Facet]:
 
 
 _STL_HINT = "export the mesh again as a binary or ASCII STL"
+_FLOAT32_MAX = 3.4028234663852886e38
 
 
 def _ascii(raw: bytes, path: str) -> list[Facet]:
@@ -110,13 +111,21 @@ def _floats(words: list[str], path: str, line_number: int, line: str) -> list[fl
     try:
         if len(words) != 3:
             raise ValueError
-        return [float(word) for word in words]
+        values = [float(word) for word in words]
     except ValueError:
         raise LocatedError.at(
             SourceLocation(path, line_number, 1, line),
             "expected three numbers in this ASCII STL line",
             hint=_STL_HINT,
         ) from None
+    # a Mesh holds float32: a larger number has no value there (packing it raised OverflowError)
+    if any(abs(value) > _FLOAT32_MAX for value in values if value == value):
+        raise LocatedError.at(
+            SourceLocation(path, line_number, 1, line),
+            "a number in this ASCII STL line is beyond float32's range (±3.4e38)",
+            hint="check the mesh's units and export it again",
+        )
+    return values
 
 
 def _float32(values: list[float]) -> Facet:
