@@ -17,6 +17,7 @@ import math
 import struct
 
 from unityscaffold.unity.mesh import MeshData
+from unityscaffold.urdf.transforms import f32 as _f32
 
 __all__ = ["cylinder_collider_mesh"]
 
@@ -24,11 +25,6 @@ _SIDES = 30
 _RING = _SIDES + 1  # a cap: its centre and the ring
 _VERTICES = 2 * _RING + _SIDES * _SIDES * 2 + 2
 _RADIUS, _HALF_HEIGHT = 0.5, 1.0
-
-
-def _f32(value: float) -> float:
-    result: float = struct.unpack("<f", struct.pack("<f", value))[0]
-    return result
 
 
 _TWO_PI = _f32(_f32(math.pi) * 2)
