@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+import yaml
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity.material import MATERIAL_FILE_ID
@@ -50,3 +51,33 @@ def test_a_textured_material_is_refused_for_now() -> None:
     with pytest.raises(LocatedError) as caught:
         importer_materials(robot)
     assert caught.value.render().startswith("r.urdf:1:17: error: material 'skin' has a texture")
+
+
+@pytest.mark.parametrize(
+    ("name", "shown"),
+    [("../../Evil", "'/'"), ("a\\b", repr("\\")), ("C:drive", "':'"), ("..", "no letters")],
+)
+def test_a_material_name_that_cannot_name_a_file_is_refused_at_the_material(
+    name: str, shown: str
+) -> None:
+    # the name is the .mat file's: a separator or '..' put it outside the Materials folder
+    robot = parse_urdf(
+        f'<robot name="r">\n  <material name="{name}"><color rgba="1 0 0 1"/></material>'
+        '<link name="a"/></robot>'.encode(),
+        "r.urdf",
+    )
+    with pytest.raises(LocatedError) as caught:
+        importer_materials(robot)
+    rendered = caught.value.render()
+    assert rendered.startswith(f"r.urdf:2:3: error: material {name!r} cannot name its .mat file")
+    assert f"({shown})" in rendered and "hint: rename the material" in rendered
+
+
+def test_a_material_named_with_yaml_indicators_keeps_its_name() -> None:
+    robot = parse_urdf(
+        b'<robot name="r"><material name="red #2 - &amp;shiny"><color rgba="1 0 0 1"/>'
+        b'</material><link name="a"/></robot>'
+    )
+    text = importer_materials(robot)["red #2 - &shiny.mat"]
+    body = text.split("\n--- !u!21 &2100000\n", 1)[1]
+    assert yaml.safe_load(body)["Material"]["m_Name"] == "red #2 - &shiny"

@@ -7,6 +7,7 @@ import struct
 from pathlib import Path
 
 import pytest
+import yaml
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.urdf.stl import FACETS_PER_MESH, read_stl, stl_mesh_assets, stl_meshes
@@ -121,3 +122,12 @@ def test_a_number_beyond_float32_in_an_ascii_stl_is_located_at_its_line(tmp_path
     rendered = caught.value.render()
     assert rendered.startswith(f"{path}:5:1: error: a number in this ASCII STL line is beyond")
     assert "hint: check the mesh's units" in rendered
+
+
+def test_a_mesh_named_with_yaml_indicators_keeps_its_name(tmp_path: Path) -> None:
+    # the name is the file's: written plain, '#' began a comment and ': ' a mapping
+    path = binary_stl(tmp_path / "arm #2: left.stl", [(0.0,) * 12])
+    [(name, text)] = stl_mesh_assets(path)
+    assert name == "arm #2: left_0.asset"
+    body = text.split("\n--- !u!43 &4300000\n", 1)[1]
+    assert yaml.safe_load(body)["Mesh"]["m_Name"] == "arm #2: left_0"

@@ -6,7 +6,7 @@ every Standard property at its default except the colour, metallic and smoothnes
 
 from __future__ import annotations
 
-from unityscaffold.unity._scalars import format_float
+from unityscaffold.unity._scalars import format_float, format_string
 
 __all__ = ["MATERIAL_FILE_ID", "standard_material"]
 
@@ -67,7 +67,7 @@ def standard_material(
         f"--- !u!21 &{MATERIAL_FILE_ID}\nMaterial:\n  serializedVersion: 8\n"
         "  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n"
         "  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n"
-        f"  m_Name: {name}\n"
+        f"  m_Name: {format_string(name, column=10)}\n"
         "  m_Shader: {fileID: 46, guid: 0000000000000000f000000000000000, type: 0}\n"
         "  m_Parent: {fileID: 0}\n  m_ModifiedSerializedProperties: 0\n"
         "  m_ValidKeywords: []\n  m_InvalidKeywords: []\n  m_LightmapFlags: 4\n"

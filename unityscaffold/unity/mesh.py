@@ -14,7 +14,7 @@ import struct
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from unityscaffold.unity._scalars import format_float, to_float32
+from unityscaffold.unity._scalars import format_float, format_string, to_float32
 
 __all__ = ["MESH_FILE_ID", "MeshData", "mesh_asset", "mesh_document"]
 
@@ -65,7 +65,7 @@ def mesh_document(file_id: int, name: str, mesh: MeshData, *, keep: bool) -> str
         f"--- !u!43 &{file_id}\nMesh:\n"
         "  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n"
         "  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n"
-        f"  m_Name: {name}\n  serializedVersion: 11\n"
+        f"  m_Name: {format_string(name, column=10)}\n  serializedVersion: 11\n"
         "  m_SubMeshes:\n  - serializedVersion: 2\n    firstByte: 0\n"
         f"    indexCount: {len(mesh.indices)}\n    topology: 0\n    baseVertex: 0\n"
         f"    firstVertex: {first}\n    vertexCount: {used}\n    localAABB:\n"

@@ -29,6 +29,7 @@ def importer_materials(robot: Robot) -> dict[str, str]:
         name = material_name(material)
         if name in colours:
             continue
+        _check_file_name(material, name)
         if material.color is None and material.texture is not None:
             raise LocatedError.at(
                 material.location,
@@ -40,6 +41,23 @@ def importer_materials(robot: Robot) -> dict[str, str]:
         f"{name}.mat": standard_material(name, colour, metallic=0.75, smoothness=0.75)
         for name, colour in sorted(colours.items())
     }
+
+
+# Unity refuses these in an asset's name on every platform; a separator or '..' would put the
+# .mat file outside the Materials folder
+_NOT_IN_FILE_NAMES = frozenset('/\\:*?"<>|')
+
+
+def _check_file_name(material: Material, name: str) -> None:
+    bad = sorted({c for c in name if c in _NOT_IN_FILE_NAMES or not c.isprintable()})
+    if name.strip(". ") and not bad:
+        return
+    shown = ", ".join(repr(c) for c in bad) if bad else "no letters" if name else "no name"
+    raise LocatedError.at(
+        material.location,
+        f"material {name!r} cannot name its .mat file ({shown})",
+        hint="rename the material with letters, digits, '_', '-' or spaces",
+    )
 
 
 def _visual_materials(robot: Robot, root: Link) -> Iterator[Material]:
