@@ -222,7 +222,11 @@ def test_each_field_gets_what_its_declared_type_holds(project: Path) -> None:
             "no GameObject named 'Nowhere' at the root",
             "declare it under `objects:`",
         ),
-        ('{Tr: "Robot"}', "Tr expects a reference to a Transform (@Path or @Path:Class)", None),
+        (
+            '{Tr: "Robot"}',
+            "Tr expects a reference to a Transform (@Path or @Path:Class, or null), not 'Robot'",
+            'a reference starts with @: "@Robot"',
+        ),
         ("{Chain: 3}", "Chain expects a list of a reference to a Transform", None),
         ("{speed: fast}", "speed expects a number, not 'fast'", None),
         ("{mode: Park}", "mode expects a member of the enum Mode, not 'Park'", "Idle, Drive"),

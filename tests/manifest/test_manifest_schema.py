@@ -47,7 +47,6 @@ SCHEMA_REJECTS = [
     "entry_not_a_mapping",
     "number_for_text",
     "boolean_written_yes",
-    "component_empty_field_value",
     "numbers_past_csharp_types",
 ]
 

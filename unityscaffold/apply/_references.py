@@ -12,7 +12,7 @@ from collections.abc import Iterable
 from typing import Protocol
 
 from unityscaffold.errors import LocatedError, SourceLocation
-from unityscaffold.manifest.model import ObjectPath, StructValue
+from unityscaffold.manifest.model import EmptyReference, ObjectPath, StructValue
 from unityscaffold.unity import GameObject, ObjectRef, SceneComponent, SceneDocument, ScriptRef
 from unityscaffold.unity.catalog import CatalogScript
 from unityscaffold.unity.values import FieldValue
@@ -64,9 +64,12 @@ def _by_name(
 def untyped_value(
     ctx: Classes, editor: Finder, name: str, value: object, where: SourceLocation
 ) -> FieldValue:
-    """A field value of a script apply cannot read, written as given (references resolved)."""
+    """A field value of a script apply cannot read, written as given (references resolved,
+    ``null`` an empty one)."""
     if isinstance(value, ObjectPath):
         return _by_name(ctx, editor, name, value, where)
+    if isinstance(value, EmptyReference):
+        return ObjectRef(0)
     if isinstance(value, StructValue):
         return {k: untyped_value(ctx, editor, k, v, where) for k, v in value.items}
     if isinstance(value, tuple):

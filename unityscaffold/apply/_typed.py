@@ -12,9 +12,15 @@ import difflib
 from collections.abc import Callable, Mapping, Sequence
 
 from unityscaffold.errors import LocatedError, SourceLocation
-from unityscaffold.manifest.model import ComponentField, ObjectPath, StructValue
+from unityscaffold.manifest.model import (
+    ComponentField,
+    EmptyReference,
+    ObjectPath,
+    StructValue,
+    value_text,
+)
 from unityscaffold.manifest.model import FieldValue as ManifestValue
-from unityscaffold.unity import Enum
+from unityscaffold.unity import Enum, ObjectRef
 from unityscaffold.unity.catalog import CatalogField
 from unityscaffold.unity.values import FieldValue, InlineMap
 
@@ -57,7 +63,7 @@ def _describe(kind: str) -> str:
     if kind.startswith("enum:"):
         return f"a member of the enum {kind[5:].rsplit('.', 1)[-1]}"
     if kind.startswith("ref:"):
-        return f"a reference to a {kind[4:].rsplit('.', 1)[-1]} (@Path or @Path:Class)"
+        return f"a reference to a {kind[4:].rsplit('.', 1)[-1]} (@Path or @Path:Class, or null)"
     if kind in _STRUCTS:
         return f"a {kind} such as {{{', '.join(f'{k}: 0' for k in _STRUCTS[kind])}}}"
     return {"int": "an integer", "float": "a number", "bool": "true or false"}.get(
@@ -76,14 +82,19 @@ def typed_value(
     """``value`` as the field of ``kind`` stores it; a located error when it does not fit."""
 
     def wrong() -> LocatedError:
-        shown = f"@{value.path}" if isinstance(value, ObjectPath) else repr(value)
-        return LocatedError.at(where, f"{field} expects {_describe(kind)}, not {shown}")
+        return LocatedError.at(
+            where,
+            f"{field} expects {_describe(kind)}, not {value_text(value)}",
+            hint=_hint(kind, value),
+        )
 
     if kind.endswith("[]"):
         if not isinstance(value, tuple):
             raise wrong()
         return [typed_value(kind[:-2], v, where, field, enums, resolve) for v in value]
     if kind.startswith("ref:"):
+        if isinstance(value, EmptyReference):
+            return ObjectRef(0)
         if not isinstance(value, ObjectPath):
             raise wrong()
         return resolve(value, kind[4:], where)
@@ -111,12 +122,29 @@ def typed_value(
             return Enum(value)
         raise LocatedError.at(
             where,
-            f"{field} expects a member of the enum {kind[5:].rsplit('.', 1)[-1]}, not {value!r}",
+            f"{field} expects a member of the enum {kind[5:].rsplit('.', 1)[-1]}, "
+            f"not {value_text(value)}",
             hint="its members: " + ", ".join(members),
         )
     if kind in _STRUCTS:
         return _struct(kind, value, wrong)
+    if isinstance(value, EmptyReference):
+        raise wrong()
     return value  # type: ignore[return-value]  # a struct the catalog does not detail
+
+
+def _hint(kind: str, value: ManifestValue) -> str | None:
+    """What to write instead, for the mistakes a reference invites."""
+    if kind.startswith("ref:") and isinstance(value, StructValue):
+        return "write null for an empty reference; other objects are named by @Path"
+    if kind.startswith("ref:") and not kind.endswith("[]") and isinstance(value, str):
+        return f'a reference starts with @: "@{value}"'
+    if isinstance(value, EmptyReference):
+        return (
+            "null is an empty reference, only for fields that hold an object or component; "
+            "remove the field to keep the component's default"
+        )
+    return None
 
 
 def _struct(kind: str, value: ManifestValue, wrong: Callable[[], LocatedError]) -> FieldValue:

@@ -10,6 +10,7 @@ from unityscaffold.manifest._yaml import YMap, YNode, YScalar, YSeq
 from unityscaffold.manifest.model import (
     CSHARP_IDENTIFIER,
     ComponentField,
+    EmptyReference,
     FieldValue,
     ObjectPath,
     StructValue,
@@ -19,6 +20,9 @@ __all__ = ["parse_reference", "read_fields"]
 
 EXPECT_REFERENCE = "@Path/To/GameObject or @Path/To/GameObject:ComponentClass"
 _FIELD_NAME = re.compile(CSHARP_IDENTIFIER)
+# How YAML writes a null on purpose; a key with nothing after it is null too, but is more
+# likely a value left out by mistake.
+_WRITTEN_NULL = re.compile(r"(?:null|Null|NULL|~|!!null)(?![\w~])")
 
 
 def parse_reference(text: str) -> ObjectPath | None:
@@ -58,6 +62,12 @@ def read_fields(r: Reader, m: YMap) -> tuple[ComponentField, ...]:
     return tuple(fields)
 
 
+def _written_null(node: YScalar) -> bool:
+    where = node.location
+    text = where.source_line or ""
+    return _WRITTEN_NULL.match(text, max(where.col - 1, 0)) is not None
+
+
 def _value(r: Reader, node: YNode, name: str) -> FieldValue | None:
     if isinstance(node, YSeq):
         items = [_value(r, item, name) for item in node.items]
@@ -67,11 +77,14 @@ def _value(r: Reader, node: YNode, name: str) -> FieldValue | None:
         return StructValue(tuple((k, v) for k, v in members if v is not None))
     value = node.value
     if value is None:
+        if _written_null(node):
+            return EmptyReference()
         r.error(
             node.location,
             f"field '{name}' has no value",
-            expected="a number, text, true/false, a list, a mapping or an @reference",
-            hint="remove the field to keep the component's default",
+            expected="a number, text, true/false, a list, a mapping, an @reference or null",
+            hint="write null for an empty reference (None in the Inspector), or remove the "
+            "field to keep the component's default",
         )
         return None
     if isinstance(value, str) and value.startswith("@"):

@@ -26,6 +26,7 @@ __all__ = [
     "ComponentField",
     "Connector",
     "Direction",
+    "EmptyReference",
     "FieldValue",
     "Locations",
     "Manifest",
@@ -40,6 +41,7 @@ __all__ = [
     "Topic",
     "default_class_name",
     "is_csharp_identifier",
+    "value_text",
 ]
 
 MANIFEST_VERSION = 1
@@ -134,7 +136,31 @@ class StructValue:
         return dict(self.items)
 
 
-FieldValue = bool | int | float | str | ObjectPath | StructValue | tuple["FieldValue", ...]
+@dataclass(frozen=True, slots=True)
+class EmptyReference:
+    """``null`` as a field value: a reference to nothing (None in the Inspector,
+    ``{fileID: 0}`` in the scene), for a field or list item that holds an object."""
+
+    def __str__(self) -> str:
+        return "null"
+
+
+FieldValue = (
+    bool | int | float | str | ObjectPath | EmptyReference | StructValue | tuple["FieldValue", ...]
+)
+
+
+def value_text(value: FieldValue) -> str:
+    """A field value as the manifest writes it (YAML flow style), for messages."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, StructValue):
+        return "{" + ", ".join(f"{k}: {value_text(v)}" for k, v in value.items) + "}"
+    if isinstance(value, tuple):
+        return "[" + ", ".join(value_text(v) for v in value) + "]"
+    if isinstance(value, str):
+        return f"'{value}'" if value.isprintable() else repr(value)
+    return str(value)
 
 
 @dataclass(frozen=True, slots=True)

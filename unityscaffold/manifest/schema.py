@@ -23,9 +23,10 @@ __all__ = ["build_schema", "load_schema", "render_schema"]
 
 _FIELD_VALUE = {
     "description": "A serialized field value: number, text, boolean, list or mapping "
-    "(a struct). Text starting with '@' refers to a GameObject or component in the scene.",
+    "(a struct). Text starting with '@' refers to a GameObject or component in the scene; "
+    "null is an empty reference (written null or ~: a key with no value is an error).",
     "anyOf": [
-        {"type": ["string", "number", "boolean"]},
+        {"type": ["string", "number", "boolean", "null"]},
         {"type": "array", "items": {"$ref": "#/$defs/fieldValue"}},
         {"type": "object", "additionalProperties": {"$ref": "#/$defs/fieldValue"}},
     ],
