@@ -28,6 +28,7 @@ from unityscaffold.apply._objects import (
     declare_objects,
     set_builtin_references,
 )
+from unityscaffold.apply._order import order_objects
 from unityscaffold.apply._references import typed_reference
 from unityscaffold.apply._renames import follow
 from unityscaffold.apply._rossharp import RosSharp
@@ -93,6 +94,8 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
     set_references(ctx, editor, pending)
     editor.prune(lock.components, editor.wanted)
     _prune_gameobjects(plan, doc, lock)
+    objects_here = [o for o in m.objects if o.scene == plan.relative]
+    order_objects(doc, objects_here, editor.path, plan.edits)
 
 
 def _declare_objects(ctx: SceneContext, editor: SceneEditor) -> DeclaredObjects | None:

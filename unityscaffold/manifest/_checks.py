@@ -104,7 +104,18 @@ def _component_repeats(r: Reader, components: Sequence[Component]) -> None:
 
 def _object_repeats(r: Reader, objects: Sequence[SceneObject]) -> None:
     seen: dict[tuple[str, str], SourceLocation] = {}
+    places: dict[tuple[str, str, int], SourceLocation] = {}
     for o in objects:
+        if o.sibling_index is not None:
+            place = (o.scene, o.path.rpartition("/")[0], o.sibling_index)
+            if place in places:
+                r.error(
+                    o.locations.of("sibling_index"),
+                    f"sibling_index {o.sibling_index} is taken by another object "
+                    + (f"among the children of '{place[1]}'" if place[1] else "among the roots"),
+                    hint=f"the other one is on line {places[place].line}; give each its own",
+                )
+            places.setdefault(place, o.locations.of("sibling_index"))
         key = (o.scene, o.path)
         if key in seen:
             r.error(

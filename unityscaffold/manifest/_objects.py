@@ -35,8 +35,24 @@ def read_object(r: Reader, node: YNode, ctx: Context) -> SceneObject | None:
             c for c in (_builtin(r, n) for n in r.items(m, "components")) if c is not None
         ),
         locations=locations(m),
+        sibling_index=_sibling_index(r, m),
     )
     return item if path else None
+
+
+def _sibling_index(r: Reader, m: YMap) -> int | None:
+    entry = m.get("sibling_index")
+    if entry is None:
+        return None
+    value = entry.value.value if isinstance(entry.value, YScalar) else None
+    if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= spec.INT32_MAX:
+        return value
+    r.invalid(
+        entry,
+        "a whole number from 0 (the first child)",
+        hint="count as the Hierarchy window lists the siblings, from the top",
+    )
+    return None
 
 
 def _vector(r: Reader, m: YMap, key: str, size: int) -> tuple[float, ...] | None:

@@ -5,17 +5,54 @@ Schema fragment for the value, and its default. The validator takes the allowed 
 keys from here, and ``schema.build_schema`` turns the same table into ``robot.schema.json``, so
 the two cannot drift apart. Patterns are written in the subset of regex syntax that Python and
 JSON Schema (ECMA 262) read alike.
+
+The sections of the robot's interfaces are here, the declared objects' in ``_spec_objects``;
+``Key``, ``Section``, the patterns and the fragments both share are in ``_keys``.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from dataclasses import dataclass
-from typing import Any
-
+from unityscaffold.manifest._keys import (
+    ACTION_TYPE,
+    BOOL,
+    BUILTIN_LAYERS,
+    BUILTIN_TYPES,
+    CLASS,
+    CLASS_NAME,
+    CREATE,
+    DEFAULT_TIMEOUT,
+    FLOAT32_MAX,
+    FLOAT32_TINY,
+    GAMEOBJECT,
+    GAMEOBJECT_VALUE,
+    GUID,
+    INT32_MAX,
+    KEY,
+    KEYWORD_PART,
+    LAYER_NUMBERS,
+    MSG_TYPE,
+    NAMESPACE,
+    NO_DEFAULT,
+    NOT_PORTABLE,
+    NOT_RELATIVE,
+    ROS2_ACTION_PART,
+    ROS2_NAME_NOT,
+    ROS_NAME,
+    SCENE,
+    SCENE_VALUE,
+    SRV_TYPE,
+    STR,
+    URL,
+    Key,
+    Section,
+    item_gameobject,
+    list_of,
+    patterns,
+    ref,
+    scene_key,
+)
+from unityscaffold.manifest._spec_objects import BUILTIN, OBJECT, UI
 from unityscaffold.manifest.model import (
-    CSHARP_IDENTIFIER,
-    CSHARP_KEYWORDS,
     MANIFEST_VERSION,
     Direction,
     Protocol,
@@ -23,152 +60,45 @@ from unityscaffold.manifest.model import (
     Serializer,
 )
 
-__all__ = ["SECTIONS", "Key", "Section", "patterns"]
-
-_WORD = "[A-Za-z][A-Za-z0-9_]*"
-# ROS 1's rule (a part may start with '_' after a '/'); ROS 2 also forbids '__' (ROS2_NAME_NOT).
-ROS_NAME = "^(/[A-Za-z_]|[A-Za-z])[A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*$"
-ROS2_NAME_NOT = "__"
-# What rosidl appends to an action's name for the messages and services it derives; ROS 2
-# interface names have no '_', so a type ending so is a part of an action, used only whole.
-ROS2_ACTION_PART = "_(Goal|Result|Feedback|FeedbackMessage|SendGoal|GetResult)$"
-MSG_TYPE = f"^{_WORD}/(msg/)?{_WORD}$"
-SRV_TYPE = f"^{_WORD}/(srv/)?{_WORD}$"
-ACTION_TYPE = f"^{_WORD}/(action/)?{_WORD}$"
-CLASS_NAME = f"^{CSHARP_IDENTIFIER}$"
-NAMESPACE = f"^{CSHARP_IDENTIFIER}([.]{CSHARP_IDENTIFIER})*$"
-GAMEOBJECT = "^[^/]+(/[^/]+)*$"
-SCENE = "[.]unity$"
-URL = "^wss?://[^\\s/]+(/\\S*)?$"
-GUID = "^[0-9a-f]{32}$"
-KEY = "^[A-Za-z0-9_.-]+$"
-#: The largest C# ``int``: timeout, throttle and queue become int fields in C#.
-INT32_MAX = 2**31 - 1
-#: The positive range of a C# ``float`` (rate): its smallest normal value and its largest.
-FLOAT32_TINY, FLOAT32_MAX = 1.1754943508222875e-38, 3.4028234663852886e38
-# What a path in the manifest must not contain: a '\' separator (the manifest is shared across
-# systems), and for paths inside the project a leading '/' or drive letter.
-NOT_PORTABLE = "\\\\"
-NOT_RELATIVE = "\\\\|^/|^[A-Za-z]:"
-# A C# keyword as one part of a dotted name; such a class or namespace would not compile.
-KEYWORD_PART = f"(^|[.])({'|'.join(sorted(CSHARP_KEYWORDS))})([.]|$)"
-
-#: The built-in component classes an object may declare and the built-in layers by number.
-#: ``unity/builtins.py`` holds their layouts; a test keeps the two lists equal (importing the
-#: unity stage here would load the whole scene patcher for every command that reads a manifest).
-BUILTIN_TYPES = (
-    "AudioListener",
-    "BoxCollider",
-    "Camera",
-    "Canvas",
-    "CanvasRenderer",
-    "CapsuleCollider",
-    "Light",
-    "Rigidbody",
-    "SphereCollider",
-)
-LAYER_NUMBERS = {"Default": 0, "TransparentFX": 1, "Ignore Raycast": 2, "Water": 4, "UI": 5}
-BUILTIN_LAYERS = list(LAYER_NUMBERS)
-
-NO_DEFAULT = object()
-DEFAULT_TIMEOUT = 10
-
-
-@dataclass(frozen=True, slots=True)
-class Key:
-    name: str
-    doc: str
-    schema: Mapping[str, Any]
-    required: bool = False
-    default: object = NO_DEFAULT
-
-
-@dataclass(frozen=True, slots=True)
-class Section:
-    """A mapping in the manifest. ``label`` names it in messages, ``ref`` in the schema."""
-
-    label: str
-    ref: str
-    doc: str
-    keys: tuple[Key, ...]
-    rules: tuple[Mapping[str, Any], ...] = ()
-
-    @property
-    def names(self) -> tuple[str, ...]:
-        return tuple(k.name for k in self.keys)
-
-    @property
-    def required(self) -> tuple[str, ...]:
-        return tuple(k.name for k in self.keys if k.required)
-
-    def key(self, name: str) -> Key:
-        return next(k for k in self.keys if k.name == name)
-
-
-def patterns() -> dict[str, str]:
-    """Every pattern by name, for tests that check Python and the schema agree on them."""
-    return {
-        "ros_name": ROS_NAME,
-        "msg_type": MSG_TYPE,
-        "srv_type": SRV_TYPE,
-        "action_type": ACTION_TYPE,
-        "class": CLASS_NAME,
-        "namespace": NAMESPACE,
-        "gameobject": GAMEOBJECT,
-        "scene": SCENE,
-        "url": URL,
-        "not_portable": NOT_PORTABLE,
-        "not_relative": NOT_RELATIVE,
-        "keyword_part": KEYWORD_PART,
-        "ros2_action_part": ROS2_ACTION_PART,
-        "guid": GUID,
-        "key": KEY,
-    }
-
-
-def _ref(name: str) -> dict[str, Any]:
-    return {"$ref": f"#/$defs/{name}"}
-
-
-def _list_of(item: Mapping[str, Any]) -> dict[str, Any]:
-    # null is accepted so that a key whose entries are all commented out is still valid
-    return {"type": ["array", "null"], "items": dict(item)}
-
-
-_STR = {"type": "string", "minLength": 1}
-_BOOL = {"type": "boolean"}
-_SCENE = {"type": "string", "pattern": SCENE, "not": {"pattern": NOT_RELATIVE}}
-_GAMEOBJECT = {"type": "string", "pattern": GAMEOBJECT}
-_CREATE = Key(
-    "create",
-    "Create the GameObject (and missing parents) if the scene lacks it. "
-    "Overrides the top-level `create_gameobjects`.",
-    _BOOL,
-)
-_CLASS = Key(
-    "class",
-    "Name of the generated C# class, overriding the one derived from the "
-    "name (e.g. `/cmd_vel` publish gives `CmdVelPublisher`).",
-    {"type": "string", "pattern": CLASS_NAME, "not": {"enum": sorted(CSHARP_KEYWORDS)}},
-)
-
-
-def _scene_key(what: str) -> Key:
-    return Key(
-        "scene",
-        f"Scene that holds the {what}, relative to the project "
-        "(e.g. `Assets/Scenes/Main.unity`). Default: the top-level `scene`.",
-        _SCENE,
-    )
-
-
-def _item_gameobject(what: str) -> Key:
-    return Key(
-        "gameobject",
-        f"Hierarchy path (`Parent/Child`) of the GameObject that gets the "
-        f"{what}. Default: the connector's GameObject, which ROS#'s components require.",
-        _GAMEOBJECT,
-    )
+__all__ = [
+    "ACTION",
+    "ACTION_TYPE",
+    "BUILTIN",
+    "BUILTIN_LAYERS",
+    "BUILTIN_TYPES",
+    "CLASS_NAME",
+    "COMPONENT",
+    "CONNECTOR",
+    "DEFAULT_TIMEOUT",
+    "FLOAT32_MAX",
+    "FLOAT32_TINY",
+    "GAMEOBJECT",
+    "GUID",
+    "INT32_MAX",
+    "KEY",
+    "KEYWORD_PART",
+    "LAYER_NUMBERS",
+    "MSG_TYPE",
+    "NAMESPACE",
+    "NOT_PORTABLE",
+    "NOT_RELATIVE",
+    "NO_DEFAULT",
+    "OBJECT",
+    "ROS2_ACTION_PART",
+    "ROS2_NAME_NOT",
+    "ROS_NAME",
+    "SCENE",
+    "SECTIONS",
+    "SERVICE",
+    "SRV_TYPE",
+    "TOP",
+    "TOPIC",
+    "UI",
+    "URL",
+    "Key",
+    "Section",
+    "patterns",
+]
 
 
 TOP = Section(
@@ -191,7 +121,7 @@ TOP = Section(
         Key(
             "project",
             "Unity project root (the folder holding `Assets/`), relative to this file.",
-            {**_STR, "not": {"pattern": NOT_RELATIVE}},
+            {**STR, "not": {"pattern": NOT_RELATIVE}},
             default=".",
         ),
         Key(
@@ -209,49 +139,49 @@ TOP = Section(
             "include_shipped",
             "Also generate classes for message packages that ROS# already "
             "ships (std_msgs, geometry_msgs, …); normally their ROS# classes are used.",
-            _BOOL,
+            BOOL,
             default=False,
         ),
         Key(
             "interfaces",
             "Extra folders searched for `.msg`/`.srv`/`.action` files (workspaces, "
             "a definitions cache), relative to this file.",
-            _list_of({**_STR, "not": {"pattern": NOT_PORTABLE}}),
+            list_of({**STR, "not": {"pattern": NOT_PORTABLE}}),
         ),
         Key(
             "scene",
             "Default scene for the connector, topics, services, actions and components, relative "
             "to the project. Required unless every entry names its own.",
-            _SCENE,
+            SCENE_VALUE,
         ),
         Key(
             "create_gameobjects",
             "Create GameObjects named by entries when the scene lacks them.",
-            _BOOL,
+            BOOL,
             default=True,
         ),
         Key(
             "connector",
             "ROS#'s RosConnector: where it lives and its settings.",
-            {"anyOf": [_ref("connector"), {"type": "null"}]},
+            {"anyOf": [ref("connector"), {"type": "null"}]},
         ),
-        Key("topics", "Topics Unity publishes or subscribes to.", _list_of(_ref("topic"))),
-        Key("services", "Services Unity calls or provides.", _list_of(_ref("service"))),
+        Key("topics", "Topics Unity publishes or subscribes to.", list_of(ref("topic"))),
+        Key("services", "Services Unity calls or provides.", list_of(ref("service"))),
         Key(
             "actions",
             "Actions Unity sends goals to (client) or carries out (server).",
-            _list_of(_ref("action")),
+            list_of(ref("action")),
         ),
         Key(
             "components",
             "Existing MonoBehaviours (yours, ROS#'s or a package's) to add with field values.",
-            _list_of(_ref("component")),
+            list_of(ref("component")),
         ),
         Key(
             "objects",
             "GameObjects to create and keep as declared: transform, active flag, tag, layer, "
             "UI layout and built-in components (Camera, Light, colliders, Canvas, …).",
-            _list_of(_ref("object")),
+            list_of(ref("object")),
         ),
     ),
     rules=(
@@ -282,12 +212,12 @@ CONNECTOR = Section(
         Key(
             "scene",
             "Scene of the RosConnector, relative to the project. Default: the top-level `scene`.",
-            _SCENE,
+            SCENE_VALUE,
         ),
         Key(
             "gameobject",
             "Hierarchy path of the GameObject holding the RosConnector; created if missing.",
-            _GAMEOBJECT,
+            GAMEOBJECT_VALUE,
             default="RosConnector",
         ),
         Key(
@@ -340,9 +270,9 @@ TOPIC = Section(
             {"enum": [d.value for d in Direction]},
             required=True,
         ),
-        _item_gameobject("generated script"),
-        _scene_key("GameObject"),
-        _CREATE,
+        item_gameobject("generated script"),
+        scene_key("GameObject"),
+        CREATE,
         Key(
             "rate",
             "Publish only: messages per second (Hz). Absent: publish on demand.",
@@ -365,7 +295,7 @@ TOPIC = Section(
             "Subscribe only: rosbridge `queue_length`.",
             {"type": "integer", "minimum": 1, "maximum": INT32_MAX},
         ),
-        _CLASS,
+        CLASS,
     ),
     rules=(
         {
@@ -402,10 +332,10 @@ SERVICE = Section(
             {"enum": [r.value for r in Role]},
             required=True,
         ),
-        _item_gameobject("generated script"),
-        _scene_key("GameObject"),
-        _CREATE,
-        _CLASS,
+        item_gameobject("generated script"),
+        scene_key("GameObject"),
+        CREATE,
+        CLASS,
     ),
 )
 
@@ -434,10 +364,10 @@ ACTION = Section(
             {"enum": [r.value for r in Role]},
             required=True,
         ),
-        _item_gameobject("generated script"),
-        _scene_key("GameObject"),
-        _CREATE,
-        _CLASS,
+        item_gameobject("generated script"),
+        scene_key("GameObject"),
+        CREATE,
+        CLASS,
     ),
 )
 
@@ -478,11 +408,11 @@ COMPONENT = Section(
         Key(
             "gameobject",
             "Hierarchy path of the GameObject that gets the component.",
-            _GAMEOBJECT,
+            GAMEOBJECT_VALUE,
             required=True,
         ),
-        _scene_key("GameObject"),
-        _CREATE,
+        scene_key("GameObject"),
+        CREATE,
         Key(
             "fields",
             "Serialized field values by field name. A text starting with `@` refers to "
@@ -491,99 +421,13 @@ COMPONENT = Section(
             {
                 "type": ["object", "null"],
                 "propertyNames": {"pattern": CLASS_NAME},
-                "additionalProperties": _ref("fieldValue"),
+                "additionalProperties": ref("fieldValue"),
             },
         ),
     ),
     rules=(
         {"anyOf": [{"required": ["script"]}, {"required": ["guid"]}]},
         {"dependentRequired": {"dll_class": ["guid"]}},
-    ),
-)
-
-_FLOAT = {"type": "number", "minimum": -FLOAT32_MAX, "maximum": FLOAT32_MAX}
-_VEC3 = {"type": "array", "items": _FLOAT, "minItems": 3, "maxItems": 3}
-_VEC2 = {"type": "array", "items": _FLOAT, "minItems": 2, "maxItems": 2}
-
-UI = Section(
-    "ui",
-    "ui",
-    "A UI object's RectTransform; keys left out keep the scene's values (new: Unity's defaults).",
-    (
-        Key("anchor_min", "`m_AnchorMin`, e.g. `[0, 0]`.", _VEC2),
-        Key("anchor_max", "`m_AnchorMax`, e.g. `[1, 1]`.", _VEC2),
-        Key("position", "`m_AnchoredPosition` in pixels, e.g. `[150, 150]`.", _VEC2),
-        Key("size", "`m_SizeDelta` in pixels, e.g. `[100, 100]`.", _VEC2),
-        Key("pivot", "`m_Pivot`, e.g. `[0.5, 0.5]`.", _VEC2),
-    ),
-)
-
-BUILTIN = Section(
-    "built-in component",
-    "builtinComponent",
-    "A built-in Unity component of a declared object.",
-    (
-        Key(
-            "type",
-            "Class of the component: " + ", ".join(f"`{name}`" for name in BUILTIN_TYPES) + ".",
-            {"enum": list(BUILTIN_TYPES)},
-            required=True,
-        ),
-        Key(
-            "id",
-            "Tells apart several components of one class on the object.",
-            {"type": "string", "pattern": KEY},
-        ),
-        Key(
-            "fields",
-            "Values by Unity's serialized name (`m_Mass`, `m_IsTrigger`, `m_Size`); the rest "
-            "keep Unity's defaults.",
-            {"type": ["object", "null"], "additionalProperties": _ref("fieldValue")},
-        ),
-    ),
-)
-
-OBJECT = Section(
-    "object",
-    "object",
-    "A GameObject created if missing and kept as declared; keys left out keep the scene's values.",
-    (
-        Key(
-            "path",
-            "Hierarchy path (`Parent/Child`); missing parents are created as empty objects.",
-            _GAMEOBJECT,
-            required=True,
-        ),
-        _scene_key("object"),
-        Key("position", "Local position `[x, y, z]`.", _VEC3),
-        Key(
-            "rotation",
-            "Local rotation as Euler angles in degrees `[x, y, z]`, as the Inspector shows it.",
-            _VEC3,
-        ),
-        Key("scale", "Local scale `[x, y, z]`.", _VEC3),
-        Key("active", "Whether the GameObject is active.", _BOOL),
-        Key(
-            "tag",
-            "Tag: a built-in one (`MainCamera`, `Player`, …) or one in "
-            "ProjectSettings/TagManager.asset.",
-            _STR,
-        ),
-        Key(
-            "layer",
-            "Layer number 0–31, or a built-in layer's name (" + ", ".join(BUILTIN_LAYERS) + ").",
-            {"anyOf": [{"type": "integer", "minimum": 0, "maximum": 31}, {"enum": BUILTIN_LAYERS}]},
-        ),
-        Key(
-            "ui",
-            "`true` (or a mapping of its layout) for a UI object with a RectTransform.",
-            {"anyOf": [{"type": "boolean"}, _ref("ui")]},
-        ),
-        Key(
-            "components",
-            "Built-in components: a class name (`Camera`) or `{type, id, fields}`.",
-            _list_of({"anyOf": [{"enum": list(BUILTIN_TYPES)}, _ref("builtinComponent")]}),
-        ),
     ),
 )
 

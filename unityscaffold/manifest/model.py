@@ -298,7 +298,8 @@ class SceneObject:
 
     Only what is written is enforced: a value left out keeps what the scene has. ``rotation`` is
     Euler angles in degrees (Unity's Z, then X, then Y order); ``layer`` is 0–31; ``ui`` is None
-    for a plain Transform, else the RectTransform's layout.
+    for a plain Transform, else the RectTransform's layout; ``sibling_index`` its place among its
+    siblings (0 first), None to leave it where it is.
     """
 
     path: str
@@ -312,6 +313,7 @@ class SceneObject:
     ui: RectLayout | None
     components: tuple[BuiltinComponent, ...]
     locations: Locations
+    sibling_index: int | None = None  # its place among its parent's children or the roots
 
 
 @dataclass(frozen=True, slots=True)

@@ -15,7 +15,7 @@ from typing import cast
 
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import write_chunks_if_changed
-from unityscaffold.unity import _declared, _edits
+from unityscaffold.unity import _declared, _edits, _siblings
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
@@ -316,6 +316,11 @@ class SceneDocument:
         items = _field_list(fields)
         file_id = _declared.ensure_builtin(self._docs, self._go(go), builtin, key, items)
         return self.component(file_id)
+
+    def place_siblings(self, parent: GameObject | None, wanted: Mapping[int, int]) -> bool:
+        """Put GameObjects (fileID -> sibling index, 0 first) at their places among
+        ``parent``'s children (the scene's roots when None); whether the text changed."""
+        return _siblings.place_siblings(self._docs, parent.file_id if parent else None, wanted)
 
     def find_builtin(
         self, go: GameObject | str, builtin: BuiltinClass, key: str | None = None
