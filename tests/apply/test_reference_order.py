@@ -99,6 +99,7 @@ components:
   - {script: TwistPublisher, gameobject: Robot, create: true,
      fields: {Topic: /a, PublishedTransform: "@Main Camera"}}
   - {script: Image, gameobject: Canvas/B}
+  - {script: Text, gameobject: Canvas/T}
   - {script: Button, gameobject: Canvas/B,
      fields: {m_Interactable: true, m_TargetGraphic: "@Canvas/B:Image"}}
 objects:
@@ -106,6 +107,7 @@ objects:
     ui: true
     components: [{type: Canvas, fields: {m_RenderMode: 0, m_Camera: "@Main Camera"}}]
   - {path: Canvas/B, ui: true, components: [CanvasRenderer]}
+  - {path: Canvas/T, ui: true, components: [CanvasRenderer]}
   - {path: Eye, components: [Camera]}
 """
     assert _apply(project, body).code == 0
@@ -115,7 +117,7 @@ objects:
         )
         .replace(
             'm_Interactable: true, m_TargetGraphic: "@Canvas/B:Image',
-            'm_Interactable: false, m_TargetGraphic: "@Canvas/B',
+            'm_Interactable: false, m_TargetGraphic: "@Canvas/T:Text',
         )
         .replace('m_RenderMode: 0, m_Camera: "@Main Camera', 'm_RenderMode: 1, m_Camera: "@Eye')
     )
