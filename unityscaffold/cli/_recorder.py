@@ -16,7 +16,6 @@ Imported only when a command runs (not for a replay); standard library only.
 
 from __future__ import annotations
 
-import io
 import marshal
 import os
 import sys
@@ -33,13 +32,13 @@ from unityscaffold.cli._noop import (
     _checksum,
     _command,
     _disabled,
-    _isatty,
     _key,
     _look,
     _real_lstat,
     _real_stat,
     _record_path,
 )
+from unityscaffold.cli._tee import wrap_stream
 from unityscaffold.usercache import cache_root, record_cache_folder, template_cache_folder
 
 TYPE_CHECKING = False
@@ -95,43 +94,6 @@ def verified() -> None:
     """Called by a command that found the project in sync and wrote nothing."""
     if _active is not None:
         _active.verified = True
-
-
-class _Tee(io.RawIOBase):
-    """A stream's bytes passed on to the real stream and kept, in order, for the record."""
-
-    def __init__(self, fd: int, target: Any, log: list[tuple[int, bytes]]) -> None:
-        super().__init__()
-        self.fd, self.target, self.log = fd, target, log
-
-    def writable(self) -> bool:
-        return True
-
-    def write(self, data: Any) -> int:
-        chunk = bytes(data)
-        self.log.append((self.fd, chunk))
-        self.target.write(chunk)
-        self.target.flush()
-        return len(chunk)
-
-    def isatty(self) -> bool:
-        return _isatty(self.target)
-
-    def fileno(self) -> int:
-        return int(self.target.fileno())
-
-    def close(self) -> None:  # the real stream stays open
-        pass
-
-
-def _wrap(stream: Any, fd: int, log: list[tuple[int, bytes]]) -> io.TextIOWrapper:
-    return io.TextIOWrapper(
-        io.BufferedWriter(_Tee(fd, stream.buffer, log)),
-        encoding=stream.encoding,
-        errors=stream.errors,
-        line_buffering=True,
-        write_through=True,
-    )
 
 
 def _hook(event: str, args: tuple[Any, ...]) -> None:
@@ -203,8 +165,8 @@ class Recorder:
             _hooked = True
         for stream in recorder.streams:
             stream.flush()
-        sys.stdout = _wrap(recorder.streams[0], 1, recorder.output)
-        sys.stderr = _wrap(recorder.streams[1], 2, recorder.output)
+        sys.stdout = wrap_stream(recorder.streams[0], 1, recorder.output)
+        sys.stderr = wrap_stream(recorder.streams[1], 2, recorder.output)
         os.stat = recorder.stat
         os.lstat = recorder.lstat
         os.access = recorder.access
