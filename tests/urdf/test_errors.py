@@ -8,6 +8,7 @@ import pytest
 
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.urdf import parse_urdf, read_urdf
+from unityscaffold.urdf._xml import MAX_DEPTH
 
 LINK_AB = '<link name="a"/><link name="b"/>'
 
@@ -31,6 +32,17 @@ def only(body: str) -> str:
     found = problems(body)
     assert len(found) == 1, found
     return found[0]
+
+
+def test_elements_nested_past_the_limit_are_located_at_the_first_too_deep() -> None:
+    # a plugin's elements are written out recursively: thousands of levels raised
+    # RecursionError (exit 3) where a located error belongs
+    deep = "<a>" * 2000 + "</a>" * 2000
+    text = only(f"<gazebo>{deep}</gazebo>")
+    # <robot> and <gazebo> are two levels: the first too deep starts past them and MAX_DEPTH - 2
+    column = len("<gazebo>") + 3 * (MAX_DEPTH - 2) + 1
+    assert text.startswith(f"bot.urdf:2:{column}: error: elements nested more than {MAX_DEPTH}")
+    assert "hint: a URDF's elements nest a few levels" in text
 
 
 def test_malformed_xml_is_located_where_expat_stopped() -> None:

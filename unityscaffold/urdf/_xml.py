@@ -97,6 +97,18 @@ _ATTRIBUTE_RE = re.compile(rb"""\s([^\s=/>]+)\s*=\s*("[^"]*"|'[^']*')""")
 _START_TAG_RE = re.compile(rb"""<[^\s/>]+(?:\s+[^\s=/>]+\s*=\s*(?:"[^"]*"|'[^']*'))*\s*/?>""")
 
 
+#: How deeply elements may nest. A URDF nests a few levels (plugin elements a few more); the
+#: elements are written and compared recursively, and a document thousands of levels deep
+#: went past Python's recursion limit.
+MAX_DEPTH = 100
+
+
+class _TooDeep(Exception):
+    def __init__(self, offset: int) -> None:
+        super().__init__(offset)
+        self.offset = offset
+
+
 class _Builder:
     """Expat handlers that assemble ``Element`` values bottom-up."""
 
@@ -109,6 +121,8 @@ class _Builder:
         self.in_cdata = False
 
     def start(self, tag: str, attributes: list[str]) -> None:
+        if len(self.stack) >= MAX_DEPTH:
+            raise _TooDeep(self.parser.CurrentByteIndex)
         pairs = list(zip(attributes[::2], attributes[1::2], strict=True))
         self.stack.append((tag, pairs, self.parser.CurrentByteIndex, []))
 
@@ -175,6 +189,12 @@ def parse_xml(source: XmlSource) -> Element:
     parser.EndCdataSectionHandler = builder.end_cdata
     try:
         parser.Parse(source.raw, True)
+    except _TooDeep as deep:
+        raise LocatedError.at(
+            source.at(deep.offset),
+            f"elements nested more than {MAX_DEPTH} deep",
+            hint="a URDF's elements nest a few levels; check for tags left open",
+        ) from None
     except expat.ExpatError as error:
         reason = expat.errors.messages[error.code]
         raise LocatedError.at(
