@@ -35,10 +35,11 @@ objects:
 def project(tmp_path: Path) -> Path:
     root = tmp_path / "p"
     assert run_cli("init", str(root), "--ros", "2").code == 0
-    # A script apply cannot read (no class in it): its fields are written as given.
+    # A script apply cannot read (C# its reader cannot parse, an unclosed class): its fields are
+    # written as given.
     scripts = root / "Assets" / "Scripts"
     scripts.mkdir(parents=True)
-    (scripts / "Blind.cs").write_text("// compiled elsewhere\n")
+    (scripts / "Blind.cs").write_text("public class Blind : MonoBehaviour {\n")
     (scripts / "Blind.cs.meta").write_text(
         "fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n"
     )

@@ -18,7 +18,6 @@ from unityscaffold.unity.meta import (
 from unityscaffold.unity.project import (
     FALLBACK_SALT,
     find_project_root,
-    find_script,
     project_salt,
     script_index,
     script_ref_for_file,
@@ -97,13 +96,13 @@ def test_the_salt_is_the_product_guid_or_the_fallback(tmp_path: Path) -> None:
     assert project_salt(_project(tmp_path / "b")) == FALLBACK_SALT
 
 
-def test_scripts_are_found_by_class_name_in_assets_and_packages(tmp_path: Path) -> None:
+def test_scripts_are_indexed_in_assets_and_packages(tmp_path: Path) -> None:
     root = _project(tmp_path)
     index = script_index(root)
-    assert sorted(s.class_name for s in index.values()) == ["Mine", "RosConnector"]
-    found = find_script(root, "RosConnector")
-    assert found is not None and found.guid == "ff98778ae051cfd40a6e4effdf851ebd"
-    assert find_script(root, "Nope") is None
+    assert sorted((s.class_name, s.guid) for s in index.values()) == [
+        ("Mine", "a" * 32),
+        ("RosConnector", "ff98778ae051cfd40a6e4effdf851ebd"),
+    ]
 
 
 def test_unitys_cache_is_not_indexed(tmp_path: Path) -> None:
@@ -113,13 +112,6 @@ def test_unitys_cache_is_not_indexed(tmp_path: Path) -> None:
     cached.write_text("class Image {}")
     (cached.parent / "Image.cs.meta").write_text(monoscript_meta("d" * 32))
     assert sorted(s.class_name for s in script_index(root).values()) == ["Mine", "RosConnector"]
-
-
-def test_two_scripts_with_one_class_name_are_ambiguous(tmp_path: Path) -> None:
-    root = _project(tmp_path)
-    (root / "Assets" / "RosConnector.cs.meta").write_text(monoscript_meta("c" * 32))
-    with pytest.raises(UserError, match=r"2 scripts named RosConnector\.cs"):
-        find_script(root, "RosConnector")
 
 
 def test_a_script_file_reference_comes_from_its_meta(tmp_path: Path) -> None:

@@ -4,17 +4,19 @@ project's own) and which script a ``components:`` entry names."""
 from __future__ import annotations
 
 import difflib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._facts import ScriptFacts
-from unityscaffold.apply._rossharp import RosSharp
-from unityscaffold.errors import LocatedError, located_at
+from unityscaffold.apply._resolve import Candidate, ProjectClasses, named_candidates
+from unityscaffold.apply._rossharp import PACKAGE, RosSharp
+from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import Component, Manifest
 from unityscaffold.unity import ScriptRef
+from unityscaffold.unity.behaviours import Kind, base_class, kind_of
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
-from unityscaffold.unity.project import ScriptInfo, find_script, script_ref_for_file
-from unityscaffold.unity.ugui import UGUI_SCRIPTS, ugui_class, ugui_script
+from unityscaffold.unity.project import ScriptInfo, script_ref_for_file
+from unityscaffold.unity.ugui import UGUI_SCRIPTS, ugui_class
 from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["SceneContext", "component_script"]
@@ -29,15 +31,20 @@ class SceneContext:
     rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
     known: ScriptFacts
     follow_renames: bool = False
+    classes: ProjectClasses = field(init=False)
 
-    def planned(self, class_name: str) -> ScriptRef | None:
-        """A script this plan generates: known by name before its file exists on disk."""
-        for script in self.code.scripts:
-            if script.view.class_name == class_name:
-                return ScriptRef(
-                    script.guid, class_name=class_name, namespace=script.view.namespace
-                )
-        return None
+    def __post_init__(self) -> None:
+        # The project's own scripts: not ROS#'s embedded copy (ROS#'s are known by the catalog
+        # or that copy's GUIDs), not this plan's generated files (candidates of their own).
+        skipped = {
+            self.manifest.asset_path(p) for s in self.code.scripts for p in (s.path, s.user_path)
+        }
+        own = {
+            guid: info
+            for guid, info in self.scripts.items()
+            if info.path not in skipped and not info.path.startswith(f"Packages/{PACKAGE}/")
+        }
+        object.__setattr__(self, "classes", ProjectClasses(self.manifest.project_root, own))
 
     def class_of(self, guid: str) -> str | None:
         for script in self.code.scripts:
@@ -60,6 +67,7 @@ class SceneContext:
 
 
 def component_script(ctx: SceneContext, item: Component) -> ScriptRef:
+    """The script a ``components:`` entry names (see ``apply/_resolve.py`` for the order)."""
     if item.guid is not None:
         if item.dll_class is None:
             return ScriptRef(item.guid, class_name=ctx.class_of(item.guid))
@@ -68,28 +76,93 @@ def component_script(ctx: SceneContext, item: Component) -> ScriptRef:
     where = item.locations.of("script")
     with located_at(where):
         if item.script.endswith(".cs"):
-            listed = next((i for i in ctx.scripts.values() if i.path == item.script), None)
-            if listed is not None:
-                return ScriptRef(listed.guid, class_name=listed.class_name)
-            return script_ref_for_file(ctx.manifest.project_root / item.script)
-        found = ctx.planned(item.script) or find_script(
-            ctx.manifest.project_root, item.script, index=ctx.scripts
+            return _file_script(ctx, item.script, where)
+        refused: list[UserError] = []
+        found = named_candidates(
+            item.script, _generated(ctx), ctx.classes, _rossharp(ctx, item.script, refused)
         )
-        if found is None and ctx.rossharp.knows(item.script):
-            found = ctx.rossharp.script(item.script)
-        if found is None:
-            found = ugui_script(item.script)
-    if found is None:
-        names = sorted(
-            {info.class_name for info in ctx.scripts.values()}
-            | {s.class_name for s in rossharp_catalog().scripts if s.attachable}
-            | set(UGUI_SCRIPTS)
+    if len(found) == 1:
+        return found[0].ref
+    if found:
+        listed = "; ".join(f"{c.full_name} ({c.origin})" for c in found)
+        raise LocatedError.at(
+            where,
+            f"{item.script} could be any of {len(found)} MonoBehaviours: {listed}",
+            hint=f"write the qualified name (such as {found[-1].full_name}) or the path of "
+            "the script's .cs file",
         )
-        close = difflib.get_close_matches(item.script, names, n=3)
-        hint = (
-            f"did you mean {' or '.join(close)}?"
-            if close
-            else ("give the script's class name (its file name) or its path, such as Assets/Foo.cs")
+    if refused:
+        raise LocatedError.at(where, refused[0].message, hint=refused[0].hint)
+    raise _not_found(ctx, item.script, where)
+
+
+def _generated(ctx: SceneContext) -> list[Candidate]:
+    return [
+        Candidate(
+            ScriptRef(s.guid, class_name=s.view.class_name, namespace=s.view.namespace),
+            f"{s.view.namespace}.{s.view.class_name}".lstrip("."),
+            "generated by this manifest",
         )
-        raise LocatedError.at(where, f"no script named {item.script} in the project", hint=hint)
-    return found
+        for s in ctx.code.scripts
+    ]
+
+
+def _rossharp(ctx: SceneContext, name: str, refused: list[UserError]) -> list[Candidate]:
+    bare = name.rpartition(".")[2]
+    facts = ctx.rossharp.facts(bare)
+    if facts is None or not facts.attachable:  # an embedded copy's message classes are not
+        return []
+    try:
+        ref = ctx.rossharp.script(bare)
+    except UserError as error:  # said only if nothing else has the name
+        refused.append(error)
+        return []
+    where = "embedded in Packages/" if ctx.rossharp.installed else ctx.rossharp.release
+    full = f"{ref.namespace}.{bare}" if ref.namespace else bare
+    return [Candidate(ref, full, f"ROS# {where}")]
+
+
+def _file_script(ctx: SceneContext, path: str, where: SourceLocation) -> ScriptRef:
+    """The script at ``path``: the class Unity binds the file to, which must be a component."""
+    listed = next((i for i in ctx.scripts.values() if i.path == path), None)
+    if listed is None:
+        return script_ref_for_file(ctx.manifest.project_root / path)
+    chosen = ctx.classes.unity_class(listed)
+    if chosen is None:  # unreadable: named by its file, as Unity would, and left unchecked
+        return ScriptRef(listed.guid, class_name=listed.class_name)
+    if chosen.decl is None:
+        raise LocatedError.at(where, f"{path} is not a script Unity can attach: {chosen.why}")
+    kind = kind_of(chosen.decl, ctx.classes.kind)
+    if kind is Kind.OTHER:
+        base = base_class(chosen.decl)
+        raise LocatedError.at(
+            where,
+            f"{path} holds {chosen.decl.full_name}, which is not a MonoBehaviour "
+            f"({'it derives from ' + base if base else 'it has no base class'})",
+            hint="name a script whose class derives from MonoBehaviour",
+        )
+    decl = chosen.decl
+    return ScriptRef(listed.guid, class_name=decl.name, namespace=decl.namespace)
+
+
+def _not_found(ctx: SceneContext, name: str, where: SourceLocation) -> LocatedError:
+    bare = name.rpartition(".")[2]
+    others = [
+        f"{info.path} holds {decl.full_name}, which is not a MonoBehaviour"
+        for info, decl, kind in ctx.classes.declaring(bare)
+        if kind is Kind.OTHER
+    ]
+    names = sorted(
+        {info.class_name for info in ctx.classes.scripts.values()}
+        | {s.class_name for s in rossharp_catalog().scripts if s.attachable}
+        | {s.view.class_name for s in ctx.code.scripts}
+        | set(UGUI_SCRIPTS)
+    )
+    close = difflib.get_close_matches(bare, names, n=3)
+    if others:
+        hint = "; ".join(others)
+    elif close:
+        hint = f"did you mean {' or '.join(close)}?"
+    else:
+        hint = "give the script's class name, qualified or not, or its path, such as Assets/Foo.cs"
+    return LocatedError.at(where, f"no MonoBehaviour named {name} in the project", hint=hint)

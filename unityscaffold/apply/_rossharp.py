@@ -123,12 +123,6 @@ class RosSharp:
         """What the catalog knows about a ROS# class (its fields, bases, RequireComponent)."""
         return rossharp_catalog().named(class_name)
 
-    def knows(self, class_name: str) -> bool:
-        if class_name in self.installed:
-            return True
-        found = self.facts(class_name)
-        return found is not None and found.attachable
-
     def class_names(self) -> dict[str, str]:
         """GUID -> class name of ROS#'s scripts in this project (for listing scenes)."""
         catalog = rossharp_catalog()

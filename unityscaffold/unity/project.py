@@ -22,7 +22,6 @@ __all__ = [
     "FALLBACK_SALT",
     "ScriptInfo",
     "find_project_root",
-    "find_script",
     "project_salt",
     "script_index",
     "script_ref_for_file",
@@ -79,23 +78,6 @@ def script_index(root: str | Path) -> dict[str, ScriptInfo]:
                     rel = meta.relative_to(base).as_posix()[: -len(".meta")]
                     found[guid] = ScriptInfo(name[: -len(".cs.meta")], rel, guid)
     return found
-
-
-def find_script(
-    root: str | Path, class_name: str, *, index: dict[str, ScriptInfo] | None = None
-) -> ScriptRef | None:
-    """The script whose file is ``<class_name>.cs``; a UserError if several files match."""
-    scripts = index if index is not None else script_index(root)
-    matches = sorted(
-        (s for s in scripts.values() if s.class_name == class_name), key=lambda s: s.path
-    )
-    if len(matches) > 1:
-        listed = ", ".join(s.path for s in matches)
-        raise UserError(
-            f"{len(matches)} scripts named {class_name}.cs: {listed}",
-            hint="pass the script's path instead of its class name",
-        )
-    return ScriptRef(matches[0].guid, class_name=class_name) if matches else None
 
 
 def script_ref_for_file(path: str | Path) -> ScriptRef:

@@ -15,6 +15,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
+from unityscaffold.unity.behaviours import Kind, unity_class
 from unityscaffold.unity.catalog import CatalogField, CatalogScript
 from unityscaffold.unity.csharp import (
     NEVER_SERIALIZED,
@@ -77,7 +78,8 @@ Lookup = Callable[[str], "ProjectFacts | CatalogScript | None"]
 def read_script_facts(
     path: Path, class_name: str, lookup: Lookup, is_script: Callable[[str], bool]
 ) -> ProjectFacts | None:
-    """The facts of ``class_name`` declared in ``path`` (None when they cannot be read).
+    """The facts of the class Unity binds ``path`` to (``class_name``, the file's name, or else
+    the file's one MonoBehaviour); None when they cannot be read.
 
     ``lookup`` gives the facts of a base class; ``is_script`` tells whether a field's type is a
     MonoBehaviour the project or ROS# has (a field of that type holds a reference).
@@ -87,9 +89,10 @@ def read_script_facts(
         decls = parse_file(data.decode("utf-8-sig", errors="replace"), path.name)
     except (OSError, SourceError, ValueError, IndexError):
         return None
-    decl = next((d for d in decls if d.name == class_name and d.kind == "class"), None)
+    decl = unity_class(decls, class_name, lambda base: _base_kind(lookup, base)).decl
     if decl is None:
         return None
+    class_name = decl.name
     enums = {d.name: d for d in decls if d.kind == "enum"}
     used: dict[str, dict[str, int]] = {}
     bases: tuple[str, ...] = ()
@@ -127,6 +130,18 @@ def read_script_facts(
         guids=(),
     )
     return ProjectFacts(script, used)
+
+
+def _base_kind(lookup: Lookup, name: str) -> Kind | None:
+    found = _ROOTS.get(name) or _base_facts(lookup, name)
+    if found is None:
+        return None
+    bases = found if isinstance(found, tuple) else _script(found).bases
+    return Kind.COMPONENT if bases[-1:] == ("MonoBehaviour",) else Kind.OTHER
+
+
+def _script(found: ProjectFacts | CatalogScript) -> CatalogScript:
+    return found.script if isinstance(found, ProjectFacts) else found
 
 
 def _base_facts(lookup: Lookup, name: str) -> ProjectFacts | CatalogScript | None:
