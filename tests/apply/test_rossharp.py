@@ -192,3 +192,14 @@ def test_samples_do_not_count_in_a_copys_content(tmp_path):
     scripts = _release_table("2.2.1")
     scripts["Samples~/Extra/Extra.cs"] = "00112233445566778899aabbccddeeff"
     assert _cached(tmp_path, "2.2.1", scripts, says="2.2.0").installed_version == "2.2.1"
+
+
+@pytest.mark.parametrize("release", ["2.0.0", "2.1.0", "2.1.1", "2.2.0", "2.2.1"])
+def test_every_release_is_known_by_its_content_whatever_its_package_json_says(tmp_path, release):
+    rossharp = _cached(tmp_path, "2.2.1", _release_table(release), says="9.9.9")
+    assert rossharp.installed_version == release
+
+
+def test_a_copy_the_catalog_does_not_know_is_taken_at_its_package_jsons_word(tmp_path):
+    rossharp = _cached(tmp_path, "2.2.1", {"Runtime/X.cs": "0" * 31 + "1"}, says="3.0.0")
+    assert rossharp.installed_version == "3.0.0"

@@ -110,7 +110,7 @@ def _generated(ctx: SceneContext) -> list[Candidate]:
 def _rossharp(ctx: SceneContext, name: str, refused: list[UserError]) -> list[Candidate]:
     bare = name.rpartition(".")[2]
     facts = ctx.rossharp.facts(bare)
-    if facts is None or not facts.attachable:  # an embedded copy's message classes are not
+    if facts is None or not facts.attachable:  # components only, not an embedded copy's messages
         return []
     try:
         ref = ctx.rossharp.script(bare)

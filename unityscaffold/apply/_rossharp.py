@@ -6,9 +6,10 @@ otherwise the catalog (``unity/rossharp_catalog.json``) gives those of the relea
 ``Packages/manifest.json``. ROS# regenerated every GUID in 2.1.0 and restored the old ones in
 2.2.1, so the release matters. A copy in ``Library/PackageCache`` changes nothing; when it holds
 another release than the pin, that is noted (Unity replaces it on its next start). A copy's
-release is told by its content, the digest of its scripts' paths and GUIDs, as ``package.json``
-may say otherwise (2.2.1's says 2.2.0); only a copy the catalog does not know is taken at its
-``package.json``'s word.
+release is told by its content, as ``package.json`` may say otherwise (2.2.1's says 2.2.0): the
+GUIDs of the catalog's scripts, and where those agree with several releases (2.1.0, 2.1.1 and
+2.2.0 share them) the digest of every script's path and GUID; only a copy the catalog does not
+know is taken at its ``package.json``'s word.
 """
 
 from __future__ import annotations
@@ -58,19 +59,34 @@ def package_release(folder: Path) -> str | None:
         data = json.loads((folder / "package.json").read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
+    catalog = rossharp_catalog()
+    root = str(folder)
+    agreeing = catalog.releases_agreeing(
+        lambda path: read_meta_guid(os.path.join(root, path + ".meta"))
+    )
+    if len(agreeing) == 1:
+        return agreeing[0]
+    if agreeing:  # releases that differ only in other files (2.1.0, 2.1.1, 2.2.0): all of them
+        found = catalog.release_with(scripts_fingerprint(_package_scripts(root)))
+        if found in agreeing:
+            return found
+    version = data.get("version") if isinstance(data, dict) else None
+    return version if isinstance(version, str) else None
+
+
+def _package_scripts(root: str) -> list[tuple[str, str]]:
+    """(path inside the package, GUID) of every ``.cs`` with a ``.meta`` under ``root``."""
     scripts = []
-    for directory, dirs, files in os.walk(folder):
-        dirs.sort()
-        for name in sorted(files):
+    # Strings, not Paths, for the thousand files of a release (pathlib's parsing was most of it).
+    for directory, _, files in os.walk(root):
+        inside = directory[len(root) + 1 :].replace(os.sep, "/")
+        for name in files:
             if name.endswith(".cs.meta"):
-                meta = Path(directory) / name
-                guid = read_meta_guid(meta)
+                guid = read_meta_guid(os.path.join(directory, name))
                 if guid is not None:
-                    scripts.append((meta.relative_to(folder).as_posix()[: -len(".meta")], guid))
-    found = rossharp_catalog().release_with(scripts_fingerprint(scripts))
-    if found is None and isinstance(data, dict) and isinstance(data.get("version"), str):
-        found = str(data["version"])
-    return found
+                    path = f"{inside}/{name}" if inside else name
+                    scripts.append((path[: -len(".meta")], guid))
+    return scripts
 
 
 def cached_release(project: Path) -> str | None:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import cache
 
@@ -78,6 +78,14 @@ class ScriptCatalog:
     enums: dict[str, dict[str, int]]  # full C# name -> member -> value
     scripts: tuple[CatalogScript, ...]
     fingerprints: dict[str, str]  # scripts_fingerprint -> release
+
+    def releases_agreeing(self, guid_at: Callable[[str], str | None]) -> tuple[str, ...]:
+        """The releases whose scripts' GUIDs are those ``guid_at`` reads (path inside the
+        package -> its GUID, None when absent): 86 files that tell most releases apart."""
+        found = {s.path: guid_at(s.path) for s in self.scripts}
+        return tuple(
+            r for r in self.releases if all(found[s.path] == s.guid(r) for s in self.scripts)
+        )
 
     def release_with(self, fingerprint: str) -> str | None:
         """The release whose scripts have ``fingerprint``, or None (another or a changed copy)."""

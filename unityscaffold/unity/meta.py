@@ -94,8 +94,9 @@ def native_format_meta(guid: str, main_object_file_id: int) -> str:
 
 def read_meta_guid(path: str | Path) -> str | None:
     """The GUID in a ``.meta`` file, or None if the file is missing or has none."""
-    try:
-        text = Path(path).read_text(encoding="utf-8", errors="replace")
+    try:  # open() rather than Path.read_text: no path object to build per file of a package
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            text = handle.read()
     except (FileNotFoundError, NotADirectoryError, IsADirectoryError):
         return None
     match = _GUID_LINE_RE.search(text)
