@@ -122,7 +122,8 @@ class SourceError(Exception):
 
 
 def clean(text: str) -> str:
-    """Comments removed, string and char literal contents blanked, ``#else`` branches dropped."""
+    """Comments removed, string literals kept as hex (see ``_string_token``), char literal
+    contents blanked, ``#else`` branches dropped."""
     out: list[str] = []
     i, n = 0, len(text)
     while i < n:
@@ -137,7 +138,7 @@ def clean(text: str) -> str:
             i = end
         elif c == '"' or (c in "@$" and text[i + 1 : i + 3].lstrip("@$").startswith('"')):
             j = _string_end(text, i)
-            out.append('""' + "\n" * text.count("\n", i, j))
+            out.append(_string_token(text[i:j]) + "\n" * text.count("\n", i, j))
             i = j
         elif c == "'":
             out.append("' '")
@@ -146,6 +147,28 @@ def clean(text: str) -> str:
             out.append(c)
             i += 1
     return _preprocess("".join(out))
+
+
+_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "0": "\0", "a": "\a", "b": "\b", "f": "\f", "v": "\v"}
+_ESCAPE = re.compile(r"\\(u[0-9a-fA-F]{4}|U[0-9a-fA-F]{8}|x[0-9a-fA-F]{1,4}|.)", re.S)
+
+
+def _string_token(literal: str) -> str:
+    """A string literal as the reader keeps it: ``"<hex of its UTF-8 bytes>"``, safe from the
+    braces and semicolons the declarations are split on (``"$"`` when it is interpolated)."""
+    prefix, _, rest = literal.partition('"')
+    body = rest[:-1]
+    if "$" in prefix:
+        return '"$"'
+    value = body.replace('""', '"') if "@" in prefix else _ESCAPE.sub(_unescape, body)
+    return '"' + value.encode("utf-8", errors="surrogatepass").hex() + '"'
+
+
+def _unescape(match: re.Match[str]) -> str:
+    code = match.group(1)
+    if code[0] in "uUx" and len(code) > 1:
+        return chr(int(code[1:], 16))
+    return _ESCAPES.get(code, code)
 
 
 def _string_end(text: str, start: int) -> int:
@@ -280,6 +303,7 @@ class RawField:
     name: str
     type: str
     serialized: bool
+    initializer: str | None = None  # the text after "=", string literals as hex
 
 
 @dataclass(slots=True)
@@ -334,7 +358,7 @@ def _parse_block(
         stop = _next_stop(text, pos)
         if stop < 0:
             return
-        head = text[pos:stop].strip()
+        start, head = pos, text[pos:stop].strip()
         if text[stop] == ";":
             if owner is not None and head:
                 owner.fields.extend(_fields(head))
@@ -358,7 +382,10 @@ def _parse_block(
             else:
                 _parse_block(body, namespace, (*outer, decl.name), path, found, decl)
         elif "=" in bare.split("(", 1)[0] and "=>" not in bare:
-            pos = text.index(";", pos) + 1  # a field with a collection initializer
+            # a field with a collection initializer: the whole declaration, braces and all
+            pos = text.index(";", pos) + 1
+            if owner is not None:
+                owner.fields.extend(_fields(text[start : pos - 1].strip()))
         elif text[pos:].lstrip().startswith("="):
             pos = text.index(";", pos) + 1  # a property with an initializer
 
@@ -430,8 +457,13 @@ def _fields(head: str) -> list[RawField]:
         and ("public" in modifiers or "SerializeField" in attribute_names)
         and not attribute_names & {"NonSerialized"}
     )
-    names = [d.split("=", 1)[0].strip() for d in declarators]
-    return [RawField(n, type_, serialized) for n in names if re.fullmatch(r"@?\w+", n)]
+    found = []
+    for declarator in declarators:
+        name, equals, initializer = declarator.partition("=")
+        name = name.strip()
+        if re.fullmatch(r"@?\w+", name):
+            found.append(RawField(name, type_, serialized, initializer.strip() if equals else None))
+    return found
 
 
 def _type_end(text: str) -> int:
