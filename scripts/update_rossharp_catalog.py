@@ -4,7 +4,9 @@ A manifest names ROS#'s stock components (``StringPublisher``, ``JointStatePatch
 ``UrdfLink``...) before Unity has ever downloaded the package, so the tool needs to know, per ROS#
 release, each script's GUID and, for checking a manifest's fields before writing, its class:
 namespace, base-class chain, ``[RequireComponent]``s and the fields Unity serializes (inherited
-ones first, as Unity writes them) with their C# types, plus the members of the enums those fields
+ones first, as Unity writes them) with their C# types and, where the C# initializer can be
+evaluated exactly, the text Unity writes for the field on a new component (so that apply writes
+every field and Unity's next save changes nothing), plus the members of the enums those fields
 use. These are facts about ROS#; this extractor and the data it writes are ours.
 
 Inputs:
@@ -40,6 +42,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the package's C# reader, also when run from a bare checkout
 
+from unityscaffold.unity._emit import emit_field  # noqa: E402
 from unityscaffold.unity.catalog import scripts_fingerprint  # noqa: E402
 from unityscaffold.unity.csharp import (  # noqa: E402
     NEVER_SERIALIZED,
@@ -53,6 +56,7 @@ from unityscaffold.unity.csharp import (  # noqa: E402
     parse_file,
     split_top,
 )
+from unityscaffold.unity.initializers import field_default  # noqa: E402
 
 TARGET = ROOT / "unityscaffold" / "unity" / "rossharp_catalog.json"
 ENV_PACKAGE = "UNITYSCAFFOLD_ROSSHARP"
@@ -180,9 +184,12 @@ def _enclosing(package: Package, decl: TypeDecl) -> list[TypeDecl]:
 
 
 def serialized_fields(package: Package, decl: TypeDecl) -> list[dict[str, str]]:
-    """Inherited fields first, then the class's own, as Unity writes them."""
+    """Inherited fields first, then the class's own, as Unity writes them; each with the text
+    Unity writes for it on a new component (``default``, after ``name:``) when its
+    initializer is a literal or the field has none (see ``unity/initializers.py``)."""
     lineage = [decl, *_enclosing(package, decl)]
     lineage.reverse()
+    enums = {t.full_name: dict(t.members) for t in package.types if t.kind == "enum"}
     fields: list[dict[str, str]] = []
     for owner in lineage:
         for raw in owner.fields:
@@ -191,7 +198,15 @@ def serialized_fields(package: Package, decl: TypeDecl) -> list[dict[str, str]]:
             resolved = resolve_type(package, raw.type, owner)
             if resolved is None:
                 continue
-            fields.append({"name": raw.name.lstrip("@"), "type": raw.type, "unity": resolved})
+            name = raw.name.lstrip("@")
+            field = {"name": name, "type": raw.type, "unity": resolved}
+            value = field_default(resolved, raw.initializer, enums, raw.type)
+            if value is not None:
+                if isinstance(value, str) and value.endswith("]"):
+                    # Unity 6 quotes such a string, earlier versions do not: one text cannot do
+                    raise SourceError(f"{owner.path}: {name}'s default {value!r} ends in ]")
+                field["default"] = "\n".join(emit_field(name, value))[len(name) + 3 :]
+            fields.append(field)
     return fields
 
 

@@ -8,11 +8,11 @@ the scene. The editor says one line per component however many passes touch it.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass
 
 from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
+from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._references import paths_in, untyped_value
 from unityscaffold.apply._typed import check_names
 from unityscaffold.apply._wiring import (
@@ -25,7 +25,7 @@ from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest.model import Component
 from unityscaffold.unity import ObjectRef, ScriptRef
 from unityscaffold.unity.catalog import CatalogScript
-from unityscaffold.unity.values import FieldValue, Verbatim
+from unityscaffold.unity.values import FieldValue
 
 __all__ = ["Pending", "attach_connector", "attach_entries", "attach_generated", "set_references"]
 
@@ -80,7 +80,9 @@ def attach_generated(
             *script.view.serialized_fields(),
         ]
         where = item.locations.of("gameobject")
-        editor.attach(item.gameobject, item.create, ref, fields, where, script.entry)
+        # a new component also gets the fields the manifest leaves alone (a client's timeout)
+        new = NewFields((*fields, *script.view.unowned_fields()))
+        editor.attach(item.gameobject, item.create, ref, fields, where, script.entry, new=new)
 
 
 def attach_entries(
@@ -138,7 +140,7 @@ def _attach(
     editor: SceneEditor,
     item: Pending,
     values: list[tuple[str, FieldValue]],
-    defaults: Sequence[tuple[str, FieldValue | Verbatim]] = (),
+    new: NewFields | None = None,
 ) -> None:
     entry = item.entry
     editor.attach(
@@ -149,5 +151,5 @@ def _attach(
         item.where,
         f"component {entry.label}",
         entry.key,
-        defaults,
+        new,
     )

@@ -7,7 +7,7 @@ import difflib
 from dataclasses import dataclass, field
 
 from unityscaffold.apply._code import CodePlan
-from unityscaffold.apply._facts import ScriptFacts
+from unityscaffold.apply._facts import NewFields, ScriptFacts
 from unityscaffold.apply._resolve import Candidate, ProjectClasses, named_candidates
 from unityscaffold.apply._rossharp import PACKAGE, RosSharp
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
@@ -17,7 +17,6 @@ from unityscaffold.unity.behaviours import Kind, base_class, kind_of
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo, script_ref_for_file
 from unityscaffold.unity.ugui import UGUI_SCRIPTS, ugui_class
-from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["SceneContext", "component_script"]
 
@@ -59,10 +58,11 @@ class SceneContext:
             return None  # apply writes a generated script's fields itself
         return self.known.of(script.guid)
 
-    def defaults(self, script: ScriptRef) -> tuple[tuple[str, FieldValue | Verbatim], ...]:
-        """Every field a new component of ``script`` is written with (see ``ScriptFacts``)."""
+    def defaults(self, script: ScriptRef) -> NewFields:
+        """Every field a new component of ``script`` is written with (see ``ScriptFacts``);
+        none for a generated script, whose fields apply writes itself."""
         if any(s.guid == script.guid for s in self.code.scripts):
-            return ()
+            return NewFields()
         return self.known.defaults(script.guid)
 
 

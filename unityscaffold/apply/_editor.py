@@ -7,10 +7,11 @@ GameObjects apply made or adopted are known by fileID (see ``_identity``).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._identity import Moved
 from unityscaffold.apply._lock import LockComponent
 from unityscaffold.errors import SourceLocation, UserError, located_at
@@ -21,7 +22,7 @@ from unityscaffold.unity import (
     SceneDocument,
     ScriptRef,
 )
-from unityscaffold.unity.values import FieldValue, Verbatim
+from unityscaffold.unity.values import FieldValue
 
 __all__ = ["SceneEditor", "ScenePlan"]
 
@@ -129,8 +130,13 @@ class SceneEditor:
         where: SourceLocation,
         entry: str,
         key: str | None = None,
-        defaults: Sequence[tuple[str, FieldValue | Verbatim]] = (),
+        new: NewFields | None = None,
     ) -> SceneComponent:
+        """Attach ``script`` to the GameObject at ``path`` or update the one there.
+
+        A new component is written with every field ``new`` lists (``fields`` in place of
+        theirs), and a note names the fields Unity will add on its next save; an existing one
+        gets only ``fields``."""
         go = self.gameobject(path, create, where)
         path = go.path
         self.wanted.add((path, script.guid))
@@ -147,6 +153,7 @@ class SceneEditor:
             existed = existed or adopt is not None
         revision = self.doc.revision
         with located_at(where):
+            defaults = new.values if new is not None else ()
             component = self.doc.ensure_component(go, script, fields, key, adopt, defaults)
         self.attached.add(component.file_id)
         if adopt is not None and key is not None:
@@ -162,6 +169,8 @@ class SceneEditor:
             self.plan.edits.append(added)
         elif self.doc.revision != revision and not _said(self.plan.edits, name, path):
             self.plan.edits.append(f"update {name} on {path}")
+        if not existed and new is not None and new.unfilled:
+            self._note_unfilled(script, new.unfilled)
         # Only what apply added is apply's to prune later; a component the user attached before
         # the manifest named it stays theirs.
         if not existed:
@@ -171,6 +180,16 @@ class SceneEditor:
                 LockComponent(self.plan.relative, path, script.guid, entry, component.file_id)
             )
         return component
+
+    def _note_unfilled(self, script: ScriptRef, unfilled: tuple[str, ...]) -> None:
+        """Once per script class: the fields of a new component Unity fills when it saves."""
+        note = (
+            f"note: Unity adds {script.class_name or script.guid}'s "
+            f"{', '.join(unfilled)} when it next saves the scene (their initial values are "
+            "not plain values in the C# source, so apply leaves them to Unity)"
+        )
+        if note not in self.plan.edits:
+            self.plan.edits.append(note)
 
     def prune(self, previous: Iterable[LockComponent], keep: set[tuple[str, str]]) -> None:
         for old in previous:

@@ -15,7 +15,17 @@ from unityscaffold.unity.ugui import ugui_class
 from unityscaffold.unity.ugui_fields import UguiClass, ugui_enums, ugui_fields
 from unityscaffold.unity.values import FieldValue, Verbatim
 
-__all__ = ["ScriptFacts"]
+__all__ = ["NewFields", "ScriptFacts"]
+
+
+@dataclass(frozen=True, slots=True)
+class NewFields:
+    """What a new component of a script is written with: its serialized fields in order, at
+    the values Unity gives a new one, and those whose initial value apply cannot work out from
+    the C# source (Unity writes them on its next save)."""
+
+    values: tuple[tuple[str, FieldValue | Verbatim], ...] = ()
+    unfilled: tuple[str, ...] = ()
 
 
 @dataclass(slots=True)
@@ -48,13 +58,23 @@ class ScriptFacts:
         found = self._project(info)
         return found.script if found is not None else None
 
-    def defaults(self, guid: str) -> tuple[tuple[str, FieldValue | Verbatim], ...]:
+    def defaults(self, guid: str) -> NewFields:
         """Every field Unity serializes for the script with ``guid``, in order, at the value
-        a new component starts with; () when they are not known."""
-        if guid in self.rossharp_names or guid in self.scripts:
-            return ()
-        ugui = _ugui(guid)
-        return ugui.defaults if ugui is not None else ()
+        a new component starts with (none for a script without facts)."""
+        if guid not in self.rossharp_names and guid not in self.scripts:
+            ugui = _ugui(guid)
+            return NewFields(ugui.defaults) if ugui is not None else NewFields()
+        facts = self.of(guid)
+        if facts is None:
+            return NewFields()
+        return NewFields(
+            tuple(
+                (f.name, Verbatim(f"  {f.name}:{f.default}"))
+                for f in facts.fields
+                if f.default is not None
+            ),
+            tuple(f.name for f in facts.fields if f.default is None),
+        )
 
     def _project(self, info: ScriptInfo) -> ProjectFacts | None:
         if info.guid not in self._read:

@@ -32,6 +32,8 @@ __all__ = [
 ]
 
 SCRIPTS_NAMESPACE = "RosGenerated"
+#: The initializer of a client's ``ResponseTimeout`` in the templates (``10f``), in seconds.
+RESPONSE_TIMEOUT = 10.0
 """Namespace of the generated MonoBehaviours, apart from users' own classes."""
 
 
@@ -54,6 +56,12 @@ class _Script:
     @property
     def user_file(self) -> str:
         return f"{self.class_name}.User.cs"
+
+    def unowned_fields(self) -> list[tuple[str, float]]:
+        """Serialized fields the manifest does not set, at their C# initializer, in declaration
+        order after ``serialized_fields``: a new component is written with them (as Unity would
+        write it), an existing one keeps what was set in Unity's Inspector."""
+        return []
 
 
 @dataclass(frozen=True, slots=True)
@@ -131,6 +139,9 @@ class ServiceClientScript(_ServiceScript):
     def what(self) -> str:
         return f"client of {self.service}"
 
+    def unowned_fields(self) -> list[tuple[str, float]]:
+        return [("ResponseTimeout", RESPONSE_TIMEOUT)]
+
 
 @dataclass(frozen=True, slots=True)
 class ServiceServerScript(_ServiceScript):
@@ -195,6 +206,9 @@ class ActionClientScript(_ActionScript):
     @property
     def what(self) -> str:
         return f"client of the action {self.action}"
+
+    def unowned_fields(self) -> list[tuple[str, float]]:
+        return [("ResponseTimeout", RESPONSE_TIMEOUT)] if self.ros2 else []
 
 
 @dataclass(frozen=True, slots=True)

@@ -8,7 +8,8 @@ field names and values be checked against the C# fields before anything is writt
 A field's ``unity`` kind says what Unity stores: ``int``, ``float``, ``bool``, ``string``,
 ``enum:<full C# name>``, a Unity struct (``Vector3``, ``Quaternion``, ``Color``...),
 ``ref:<class>`` (a reference to a GameObject, a component or a script), or any of these
-followed by ``[]`` (an array or ``List<>``).
+followed by ``[]`` (an array or ``List<>``). A field's ``default`` is the text Unity writes for
+it on a new component, from its C# initializer (absent when that is not a plain value).
 """
 
 from __future__ import annotations
@@ -50,6 +51,9 @@ class CatalogField:
     name: str
     csharp: str  # the type as written in C#
     unity: str  # what Unity stores (see the module docstring)
+    # the text Unity writes after "name:" on a new component (its C# initializer), or None
+    # when the initializer is not a value this tool can work out
+    default: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -114,7 +118,10 @@ def rossharp_catalog() -> ScriptCatalog:
             bases=tuple(s["bases"]),
             attachable=s["attachable"],
             requires=tuple(s["requires"]),
-            fields=tuple(CatalogField(f["name"], f["type"], f["unity"]) for f in s["fields"]),
+            fields=tuple(
+                CatalogField(f["name"], f["type"], f["unity"], f.get("default"))
+                for f in s["fields"]
+            ),
             guids=tuple(s["guids"].items()),
         )
         for s in data["scripts"]

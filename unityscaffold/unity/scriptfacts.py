@@ -1,6 +1,9 @@
 """A project's own MonoBehaviour as the catalog describes ROS#'s: bases, ``[RequireComponent]``s
 and serialized fields with what Unity stores for each, read from the script's ``.cs``.
 
+Each field also gets the text Unity writes for it on a new component, from its C# initializer
+(see ``unity/initializers.py``), so that apply writes a new component in full.
+
 With these a manifest's values for the project's scripts are checked like those for ROS#'s
 (a misspelled field gets "did you mean", ``@Path`` gives the GameObject, its transform or the
 component that fits the declared type). Unlike the catalog's extractor this reader never fails:
@@ -15,6 +18,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
+from unityscaffold.unity._emit import emit_field
 from unityscaffold.unity.behaviours import Kind, unity_class
 from unityscaffold.unity.catalog import CatalogField, CatalogScript
 from unityscaffold.unity.csharp import (
@@ -23,12 +27,14 @@ from unityscaffold.unity.csharp import (
     UNITY_ASSETS,
     UNITY_COMPONENTS,
     UNITY_STRUCTS,
+    RawField,
     SourceError,
     TypeDecl,
     element_type,
     parse_file,
     split_top,
 )
+from unityscaffold.unity.initializers import field_default
 
 __all__ = ["ProjectFacts", "read_script_facts"]
 
@@ -118,7 +124,8 @@ def read_script_facts(
         if raw.serialized:
             kind = _kind(raw.type, enums, used, is_script)
             if kind is not None:
-                own.append(CatalogField(raw.name.lstrip("@"), raw.type, kind))
+                name = raw.name.lstrip("@")
+                own.append(CatalogField(name, raw.type, kind, _default(name, kind, raw, used)))
     script = CatalogScript(
         class_name=class_name,
         namespace=decl.namespace,
@@ -142,6 +149,18 @@ def _base_kind(lookup: Lookup, name: str) -> Kind | None:
 
 def _script(found: ProjectFacts | CatalogScript) -> CatalogScript:
     return found.script if isinstance(found, ProjectFacts) else found
+
+
+def _default(
+    name: str, kind: str, raw: RawField, enums: Mapping[str, Mapping[str, int]]
+) -> str | None:
+    """The text Unity writes after ``name:`` on a new component, from the field's initializer
+    (None when it is not a plain value, or a string ending in ``]``, which Unity 6 quotes and
+    earlier versions do not)."""
+    value = field_default(kind, raw.initializer, enums, raw.type)
+    if value is None or (isinstance(value, str) and value.endswith("]")):
+        return None
+    return "\n".join(emit_field(name, value))[len(name) + 3 :]
 
 
 def _base_facts(lookup: Lookup, name: str) -> ProjectFacts | CatalogScript | None:
