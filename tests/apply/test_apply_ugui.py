@@ -175,3 +175,15 @@ def test_the_ugui_script_stops_when_a_saved_document_has_a_field_its_table_lacks
     assert result.returncode == 2
     assert "EventSystem" in result.stderr and "m_New" in result.stderr
     assert not (tmp_path / "out.json").exists()
+
+
+def test_a_scene_of_an_older_unity_gets_only_the_fields_the_entry_sets(project):
+    # uGUI's 2022.3 fields (m_RaycastPadding...) are not all in older versions: that Unity
+    # completes the component itself
+    demo = REPO / "tests" / "data" / "unity" / "unity-robotics-hub" / "DemoScene.unity"
+    scene = project / "Assets" / "Scenes" / "Main.unity"
+    scene.write_bytes(demo.read_bytes())
+    run = _apply(project, "components:\n  - {script: Image, gameobject: I, create: true, "
+                 "fields: {m_FillAmount: 0.5}}\n")  # fmt: skip
+    assert run.code == 0, run.err
+    assert _fields(_component(project, "I", "Image")) == "  m_FillAmount: 0.5\n"

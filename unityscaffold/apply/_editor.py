@@ -153,7 +153,7 @@ class SceneEditor:
             existed = existed or adopt is not None
         revision = self.doc.revision
         with located_at(where):
-            defaults = new.values if new is not None else ()
+            defaults = new.values if new is not None and self._fits(new) else ()
             component = self.doc.ensure_component(go, script, fields, key, adopt, defaults)
         self.attached.add(component.file_id)
         if adopt is not None and key is not None:
@@ -180,6 +180,11 @@ class SceneEditor:
                 LockComponent(self.plan.relative, path, script.guid, entry, component.file_id)
             )
         return component
+
+    def _fits(self, new: NewFields) -> bool:
+        """Whether the scene's Unity writes the fields as ``new`` lays them out."""
+        era = self.doc.era
+        return not new.since_2022 or (era.modern_prefab_fields and not era.root_order)
 
     def _note_unfilled(self, script: ScriptRef, unfilled: tuple[str, ...]) -> None:
         """Once per script class: the fields of a new component Unity fills when it saves."""

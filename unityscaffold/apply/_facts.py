@@ -26,6 +26,9 @@ class NewFields:
 
     values: tuple[tuple[str, FieldValue | Verbatim], ...] = ()
     unfilled: tuple[str, ...] = ()
+    # laid out as Unity 2022.3 writes them: a file an older Unity wrote gets only the entry's
+    # fields (its uGUI has fewer), which that Unity completes
+    since_2022: bool = False
 
 
 @dataclass(slots=True)
@@ -63,7 +66,7 @@ class ScriptFacts:
         a new component starts with (none for a script without facts)."""
         if guid not in self.rossharp_names and guid not in self.scripts:
             ugui = _ugui(guid)
-            return NewFields(ugui.defaults) if ugui is not None else NewFields()
+            return NewFields(ugui.defaults, since_2022=True) if ugui is not None else NewFields()
         facts = self.of(guid)
         if facts is None:
             return NewFields()
