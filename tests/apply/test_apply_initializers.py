@@ -31,6 +31,14 @@ namespace Demo
 
     public class Rover : Vehicle
     {
+        [Serializable]
+        public class Limits
+        {
+            public float Max = 2f;
+            public Vector2 Range;
+            private int cache;
+        }
+
         public float Speed = 2.5f;
         [SerializeField] private int wheels = 6;
         [HideInInspector] public bool Armed = true;
@@ -42,6 +50,7 @@ namespace Demo
         public float[] Ratios = new float[] { 1, 0.5f };
         public List<string> Names = new List<string>();
         public UnityEvent OnArrive;
+        public Limits Bounds;
         public float Timeout = 60 * 5;
         public string Home = Application.productName;
         [NonSerialized] public int Skipped = 4;
@@ -69,6 +78,9 @@ EXPECTED = """\
   OnArrive:
     m_PersistentCalls:
       m_Calls: []
+  Bounds:
+    Max: 2
+    Range: {x: 0, y: 0}
 """
 HEADER = "version: 1\nros: 2\nproject: .\nscene: Assets/Scenes/Main.unity\n"
 

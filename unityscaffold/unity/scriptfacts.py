@@ -35,6 +35,7 @@ from unityscaffold.unity.csharp import (
     split_top,
 )
 from unityscaffold.unity.initializers import field_default
+from unityscaffold.unity.values import FieldValue
 
 __all__ = ["ProjectFacts", "read_script_facts"]
 
@@ -100,6 +101,7 @@ def read_script_facts(
         return None
     class_name = decl.name
     enums = {d.name: d for d in decls if d.kind == "enum"}
+    nested = {d.name: d for d in decls if d.kind in ("class", "struct") and _serializable(d)}
     used: dict[str, dict[str, int]] = {}
     bases: tuple[str, ...] = ()
     inherited: tuple[CatalogField, ...] = ()
@@ -125,7 +127,8 @@ def read_script_facts(
             kind = _kind(raw.type, enums, used, is_script)
             if kind is not None:
                 name = raw.name.lstrip("@")
-                own.append(CatalogField(name, raw.type, kind, _default(name, kind, raw, used)))
+                value = _value(kind, raw, _Context(enums, used, is_script, nested))
+                own.append(CatalogField(name, raw.type, kind, _text(name, value)))
     script = CatalogScript(
         class_name=class_name,
         namespace=decl.namespace,
@@ -151,13 +154,48 @@ def _script(found: ProjectFacts | CatalogScript) -> CatalogScript:
     return found.script if isinstance(found, ProjectFacts) else found
 
 
-def _default(
-    name: str, kind: str, raw: RawField, enums: Mapping[str, Mapping[str, int]]
-) -> str | None:
-    """The text Unity writes after ``name:`` on a new component, from the field's initializer
-    (None when it is not a plain value, or a string ending in ``]``, which Unity 6 quotes and
-    earlier versions do not)."""
-    value = field_default(kind, raw.initializer, enums, raw.type)
+@dataclass(frozen=True, slots=True)
+class _Context:
+    """What a field's type is looked up in: the file's enums and ``[Serializable]`` types."""
+
+    enums: Mapping[str, TypeDecl]
+    used: dict[str, dict[str, int]]
+    is_script: Callable[[str], bool]
+    nested: Mapping[str, TypeDecl]
+
+
+def _serializable(decl: TypeDecl) -> bool:
+    names = {p.split("(")[0].strip() for a in decl.attributes for p in split_top(a)}
+    return bool(names & {"Serializable", "System.Serializable"})
+
+
+def _value(kind: str, raw: RawField, ctx: _Context, depth: int = 0) -> FieldValue | None:
+    """What Unity writes for the field on a new component (see ``unity/initializers.py``); a
+    ``[Serializable]`` class or struct of the same file without an initializer is written
+    inline with its own fields' values. None when that is not a plain value."""
+    bare = raw.type.rsplit(".", 1)[-1]
+    decl = ctx.nested.get(bare) if kind.startswith("raw:") else None
+    if decl is None or depth > 8:
+        return field_default(kind, raw.initializer, ctx.used, raw.type)
+    if raw.initializer not in (None, f"new {raw.type}()", "new()") or not decl.fields:
+        return None
+    inner: dict[str, FieldValue] = {}
+    for field in decl.fields:
+        if not field.serialized:
+            continue
+        field_kind = _kind(field.type, ctx.enums, ctx.used, ctx.is_script)
+        if field_kind is None:
+            continue
+        value = _value(field_kind, field, ctx, depth + 1)
+        if value is None:
+            return None
+        inner[field.name.lstrip("@")] = value
+    return inner or None
+
+
+def _text(name: str, value: FieldValue | None) -> str | None:
+    """The text after ``name:`` (None for no value, or a string ending in ``]``, which Unity 6
+    quotes and earlier versions do not)."""
     if value is None or (isinstance(value, str) and value.endswith("]")):
         return None
     return "\n".join(emit_field(name, value))[len(name) + 3 :]
