@@ -32,9 +32,9 @@ __all__ = [
 ]
 
 SCRIPTS_NAMESPACE = "RosGenerated"
-#: The initializer of a client's ``ResponseTimeout`` in the templates (``10f``), in seconds.
-RESPONSE_TIMEOUT = 10.0
 """Namespace of the generated MonoBehaviours, apart from users' own classes."""
+RESPONSE_TIMEOUT = 10.0
+"""A client's ``ResponseTimeout`` initializer in the templates (``10f``), in seconds."""
 
 
 def _float_literal(value: float) -> str:
