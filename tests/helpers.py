@@ -57,6 +57,22 @@ class Run:
     err: str
 
 
+def init_with_unreadable_script(root: Path) -> Path:
+    """A new ROS 2 project at ``root`` with ``Assets/Scripts/Blind.cs``, a script apply cannot
+    read (its .meta is there, but the C# is an unclosed class), so its fields are written as
+    given."""
+    assert run_cli("init", str(root), "--ros", "2").code == 0
+    return build_tree(
+        root,
+        {
+            "Assets/Scripts/Blind.cs": "public class Blind : MonoBehaviour {\n",
+            "Assets/Scripts/Blind.cs.meta": (
+                "fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n"
+            ),
+        },
+    )
+
+
 def run_cli(*args: str) -> Run:
     """Run ``scaffold ARGS`` in-process, capturing its output."""
     out, err = io.StringIO(), io.StringIO()

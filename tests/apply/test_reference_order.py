@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from helpers import run_cli
+from helpers import init_with_unreadable_script, run_cli
 
 from unityscaffold.unity.scene import SceneDocument
 
@@ -38,17 +38,7 @@ objects:
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
-    root = tmp_path / "p"
-    assert run_cli("init", str(root), "--ros", "2").code == 0
-    # A script apply cannot read (no .meta yet would make it unknown; this one has a .meta but
-    # C# its reader cannot parse, an unclosed class): its fields are written as given.
-    scripts = root / "Assets" / "Scripts"
-    scripts.mkdir(parents=True)
-    (scripts / "Blind.cs").write_text("public class Blind : MonoBehaviour {\n")
-    (scripts / "Blind.cs.meta").write_text(
-        "fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n"
-    )
-    return root
+    return init_with_unreadable_script(tmp_path / "p")
 
 
 def _apply(project: Path, body: str, *extra: str):
