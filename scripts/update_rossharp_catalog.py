@@ -42,6 +42,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the package's C# reader, also when run from a bare checkout
 
+from _derived import write_or_check  # noqa: E402
+
 from unityscaffold.unity._emit import emit_field  # noqa: E402
 from unityscaffold.unity.catalog import scripts_fingerprint  # noqa: E402
 from unityscaffold.unity.csharp import (  # noqa: E402
@@ -341,15 +343,7 @@ def main(argv: list[str] | None = None) -> int:
     except (SourceError, OSError, KeyError, ValueError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
-    if args.check:
-        current = args.output.read_text(encoding="utf-8") if args.output.exists() else ""
-        if current != text:
-            print(f"{args.output} is out of date; run without --check", file=sys.stderr)
-            return 1
-        return 0
-    args.output.write_text(text, encoding="utf-8")
-    print(f"wrote {args.output}")
-    return 0
+    return write_or_check(args.output, text, args.check)
 
 
 if __name__ == "__main__":

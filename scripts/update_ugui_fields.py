@@ -34,6 +34,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # the package's GUID table, also when run from a bare checkout
 
+from _derived import write_or_check  # noqa: E402
+
 from unityscaffold.unity.ugui import UGUI_SCRIPTS  # noqa: E402
 
 TARGET = ROOT / "unityscaffold" / "unity" / "ugui_fields.json"
@@ -311,15 +313,7 @@ def main(argv: list[str] | None = None) -> int:
     except (SampleError, OSError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
-    if args.check:
-        current = args.output.read_text(encoding="utf-8") if args.output.exists() else ""
-        if current != text:
-            print(f"{args.output} is out of date; run without --check", file=sys.stderr)
-            return 1
-        return 0
-    args.output.write_text(text, encoding="utf-8")
-    print(f"wrote {args.output}")
-    return 0
+    return write_or_check(args.output, text, args.check)
 
 
 if __name__ == "__main__":
