@@ -49,8 +49,10 @@ def compile_cs(
     ros2: bool,
     references: tuple[Path, ...] = (),
     defines: tuple[str, ...] = (),
+    extra: tuple[str, ...] = (),
 ) -> Compiled:
-    args = [mcs, *MCS_FLAGS, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
+    """``extra`` flags come after the common ones (a ``-nowarn`` for third-party sources)."""
+    args = [mcs, *MCS_FLAGS, *extra, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
     if ros2:
         args.append("-define:ROS2")
     args += [f"-define:{name}" for name in defines]
