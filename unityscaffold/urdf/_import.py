@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
+from unityscaffold.unity.prefabinstance import ModelInstance
 from unityscaffold.urdf._load import read_urdf
 from unityscaffold.urdf._packages import ResolvedMesh, resolve_meshes
 from unityscaffold.urdf.materials import importer_materials
 from unityscaffold.urdf.model import Robot
+from unityscaffold.urdf.models import ModelAsset, model_plan
 from unityscaffold.urdf.objects import ImportedObject, importer_tree
 from unityscaffold.urdf.stl import stl_mesh_assets
 
@@ -22,14 +24,20 @@ class RobotImport:
 
     ``objects`` is the GameObject tree; ``files`` maps paths relative to the robot's asset
     folder (``Materials/blue.mat``, ``<package>/meshes/arm_0.asset``) to their text, in sorted
-    order; ``meshes`` maps each ``<mesh filename>`` to its file. Model files other than STL
-    (``.dae``, …) are referenced where they are: copying them is the writer's.
+    order; ``meshes`` maps each ``<mesh filename>`` to its file.
+
+    ``models`` holds what each mesh geometry object (role ``MODEL``) is, by its key: the
+    instance of a prefab or model to place there (``unity.prefabinstance``), whose source is
+    one of ``model_assets``: the STL prefabs and the copied ``.dae`` files and textures, which
+    need the GUIDs of other assets to be written (``urdf.models``).
     """
 
     robot: Robot
     objects: ImportedObject
     files: Mapping[str, str]
     meshes: Mapping[str, ResolvedMesh]
+    models: Mapping[str, ModelInstance] = field(default_factory=dict)
+    model_assets: tuple[ModelAsset, ...] = ()
 
 
 def import_robot(
@@ -44,10 +52,16 @@ def import_robot(
     robot = read_urdf(urdf)
     meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
     files = {f"Materials/{name}": text for name, text in importer_materials(robot).items()}
-    for mesh in sorted(meshes.values(), key=lambda m: (m.package, str(m.relative))):
+    counts: dict[ResolvedMesh, int] = {}
+    for mesh in sorted(set(meshes.values()), key=lambda m: (m.package, str(m.relative))):
         if mesh.relative.suffix.lower() == ".stl":
             folder = PurePosixPath(mesh.package) / mesh.relative.parent
-            for name, text in stl_mesh_assets(mesh.path, mesh.relative.stem):
+            assets = stl_mesh_assets(mesh.path, mesh.relative.stem)
+            counts[mesh] = len(assets)
+            for name, text in assets:
                 files[str(folder / name)] = text
+    plan = model_plan(robot, meshes, counts)
     objects = importer_tree(robot, plugin_newline=plugin_newline)
-    return RobotImport(robot, objects, dict(sorted(files.items())), meshes)
+    return RobotImport(
+        robot, objects, dict(sorted(files.items())), meshes, plan.instances, plan.assets
+    )

@@ -1,0 +1,35 @@
+"""What the stage reads of a COLLADA file: the r2d2 sample's finger as Unity imported it."""
+
+from __future__ import annotations
+
+from pathlib import Path, PurePosixPath
+
+from unityscaffold.urdf.collada import read_collada
+
+
+def test_the_r2d2_finger_is_one_still_y_up_node_with_one_geometry(r2d2_urdf: Path) -> None:
+    meshes = r2d2_urdf.parent / "Urdf" / "file_server2" / "urdf_tutorial" / "meshes"
+    facts = read_collada(meshes / "l_finger.dae")
+    assert (facts.up_axis, facts.meter) == ("Y_UP", 1.0)
+    (node,) = facts.nodes
+    # its <scale> does not move it: Unity folds the node into the root with that scale only
+    assert (node.name, node.id, node.geometries, node.has_children, node.moved) == (
+        "finger_M2K_mod",
+        "finger_M2K_mod",
+        1,
+        False,
+        False,
+    )
+    assert (node.location.line, node.location.col) == (170, 7)
+    # the normal map is named but not shipped: only what exists is copied
+    assert facts.images == (
+        PurePosixPath("l_finger_color.png"),
+        PurePosixPath("l_finger_normals.png"),
+    )
+
+
+def test_a_file_without_up_axis_or_unit_reads_as_collada_s_defaults(tmp_path: Path) -> None:
+    path = tmp_path / "m.dae"
+    path.write_text('<COLLADA><asset><unit meter="cm"/></asset></COLLADA>', encoding="utf-8")
+    facts = read_collada(path)
+    assert (facts.up_axis, facts.meter, facts.nodes, facts.images) == ("Y_UP", 1.0, (), ())
