@@ -141,8 +141,17 @@ class _Builder:
         self.stl_meshes = stl_meshes
         self.assets: dict[str, ModelAsset] = {}
         self.collada: dict[Path, ColladaFacts] = {}
+        self.made: dict[tuple[ResolvedMesh, bool], ModelInstance | None] = {}
 
     def instance(
+        self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool
+    ) -> ModelInstance | None:
+        """The instance for ``mesh``; one per file and kind (links share meshes)."""
+        if (resolved, collision) not in self.made:
+            self.made[resolved, collision] = self._made(mesh, resolved, collision=collision)
+        return self.made[resolved, collision]
+
+    def _made(
         self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool
     ) -> ModelInstance | None:
         suffix = resolved.relative.suffix.lower()
