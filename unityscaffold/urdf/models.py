@@ -151,9 +151,7 @@ class _Builder:
             self.made[resolved, collision] = self._made(mesh, resolved, collision=collision)
         return self.made[resolved, collision]
 
-    def _made(
-        self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool
-    ) -> ModelInstance | None:
+    def _made(self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance | None:
         suffix = resolved.relative.suffix.lower()
         if suffix == ".stl":
             return self._stl(resolved, collision=collision)
