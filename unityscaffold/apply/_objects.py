@@ -13,6 +13,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from unityscaffold.apply._assets import asset_value
+from unityscaffold.apply._primitives import primitive_components
 from unityscaffold.apply._typed import Resolver, check_names, typed_value
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
@@ -124,20 +126,27 @@ def _place(doc: SceneDocument, item: SceneObject, path: str) -> tuple[GameObject
 
 
 def _builtin_values(
-    comp: BuiltinComponent, references: bool, resolve: Resolver
+    comp: BuiltinComponent, references: bool, resolve: Resolver, project_root: Path
 ) -> list[tuple[str, FieldValue]]:
     builtin = builtin_class(comp.type)
     assert builtin is not None  # the manifest accepts only supported classes
     check_names(builtin.name, builtin.fields, comp.fields)
-    values = []
+    values: list[tuple[str, FieldValue]] = []
     for item in comp.fields:
         kind = builtin.kind(item.name) or ""
         if kind.startswith("ref:") != references:
             continue
-        values.append(
-            (item.name, typed_value(kind, item.value, item.location, item.name, {}, resolve))
-        )
+        if kind.startswith("asset:"):
+            value = asset_value(kind, item.value, item.location, item.name, project_root)
+        else:
+            value = typed_value(kind, item.value, item.location, item.name, {}, resolve)
+        values.append((item.name, value))
     return values
+
+
+def _declared_components(item: SceneObject) -> tuple[BuiltinComponent, ...]:
+    """The primitive's components (first, as CreatePrimitive adds them), then the entry's."""
+    return (*primitive_components(item), *item.components)
 
 
 @dataclass(frozen=True, slots=True)
@@ -157,6 +166,7 @@ class DeclaredObjects:
     ordered: tuple[SceneObject, ...]
     edits: list[str]
     hooks: Hooks
+    project_root: Path
 
 
 def declare_objects(
@@ -187,16 +197,16 @@ def declare_objects(
                 doc.set_fields(go.transform_id, _transform_fields(item, stored))
             if doc.revision != revision and not created:
                 edits.append(f"update object {item.path}")
-        for comp in item.components:
-            _ensure(doc, item, comp, hooks, edits, references=False)
-    return DeclaredObjects(tuple(ordered), edits, hooks)
+        for comp in _declared_components(item):
+            _ensure(doc, item, comp, hooks, edits, project_root, references=False)
+    return DeclaredObjects(tuple(ordered), edits, hooks, project_root)
 
 
 def set_builtin_references(doc: SceneDocument, declared: DeclaredObjects) -> None:
     """The declared built-in components' reference fields, in a pass of their own."""
     for item in declared.ordered:
-        for comp in item.components:
-            _ensure(doc, item, comp, declared.hooks, declared.edits, references=True)
+        for comp in _declared_components(item):
+            _ensure(doc, item, comp, declared.hooks, declared.edits, declared.project_root, True)
 
 
 def _ensure(
@@ -205,6 +215,7 @@ def _ensure(
     comp: BuiltinComponent,
     hooks: Hooks,
     edits: list[str],
+    project_root: Path,
     references: bool,
 ) -> None:
     """One built-in component with its plain values (or only its references): one line for
@@ -212,7 +223,7 @@ def _ensure(
     builtin = builtin_class(comp.type)
     assert builtin is not None  # the manifest accepts only supported classes
     with located_at(comp.location):
-        values = _builtin_values(comp, references, hooks.resolve)
+        values = _builtin_values(comp, references, hooks.resolve, project_root)
         if references and not values:
             return
         go = hooks.now(item.path)

@@ -48,9 +48,16 @@ BUILTIN_TYPES = (
     "CanvasRenderer",
     "CapsuleCollider",
     "Light",
+    "MeshCollider",
+    "MeshFilter",
+    "MeshRenderer",
     "Rigidbody",
     "SphereCollider",
 )
+#: The shapes an object may be made as (``unity/builtins.py``'s PRIMITIVES, kept equal by a
+#: test), and Unity's others, which apply refuses until a Unity-written example checks them.
+PRIMITIVE_NAMES = ("cube", "plane")
+UNCHECKED_PRIMITIVE_NAMES = ("capsule", "cylinder", "quad", "sphere")
 LAYER_NUMBERS = {"Default": 0, "TransparentFX": 1, "Ignore Raycast": 2, "Water": 4, "UI": 5}
 BUILTIN_LAYERS = list(LAYER_NUMBERS)
 

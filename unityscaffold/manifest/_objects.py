@@ -7,6 +7,7 @@ import math
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._entries import Context, locations, read_scene
 from unityscaffold.manifest._fields import read_fields
+from unityscaffold.manifest._keys import PRIMITIVE_NAMES, UNCHECKED_PRIMITIVE_NAMES
 from unityscaffold.manifest._read import Reader, one_of, suggest
 from unityscaffold.manifest._yaml import YMap, YNode, YScalar, YSeq
 from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
@@ -21,6 +22,9 @@ def read_object(r: Reader, node: YNode, ctx: Context) -> SceneObject | None:
     if m is None:
         return None
     path = r.text(m, "path", EXPECT_PATH, spec.GAMEOBJECT)
+    components = tuple(
+        c for c in (_builtin(r, n) for n in r.items(m, "components")) if c is not None
+    )
     item = SceneObject(
         path=path or "",
         scene=read_scene(r, m, ctx, "object") or "",
@@ -31,13 +35,46 @@ def read_object(r: Reader, node: YNode, ctx: Context) -> SceneObject | None:
         tag=r.text(m, "tag", "a tag such as MainCamera"),
         layer=_layer(r, m),
         ui=_ui(r, m),
-        components=tuple(
-            c for c in (_builtin(r, n) for n in r.items(m, "components")) if c is not None
-        ),
+        components=components,
         locations=locations(m),
         sibling_index=_sibling_index(r, m),
+        primitive=_primitive(r, m, components),
     )
     return item if path else None
+
+
+def _primitive(r: Reader, m: YMap, components: tuple[BuiltinComponent, ...]) -> str | None:
+    entry = m.get("primitive")
+    if entry is None:
+        return None
+    value = entry.value.value if isinstance(entry.value, YScalar) else None
+    if value in PRIMITIVE_NAMES:
+        for comp in components:  # the primitive's mesh is the primitive's to set
+            mesh = next((f for f in comp.fields if f.name == "m_Mesh"), None)
+            if comp.type == "MeshFilter" and comp.key is None and mesh is not None:
+                r.error(
+                    mesh.location,
+                    f"m_Mesh of a {value} is its built-in mesh",
+                    hint="leave out `primitive` to give the MeshFilter a mesh of your own",
+                )
+        return str(value)
+    if value in UNCHECKED_PRIMITIVE_NAMES:
+        r.error(
+            entry.value.location,
+            f"a {value} primitive is not made yet: CreatePrimitive fits its collider to the "
+            "mesh, and no file Unity wrote has been checked for the values it gets",
+            expected=one_of(PRIMITIVE_NAMES),
+            hint="make it in Unity (GameObject > 3D Object), or declare its MeshFilter, "
+            "MeshRenderer and collider under `components`",
+        )
+        return None
+    word = value if isinstance(value, str) else ""
+    r.invalid(
+        entry,
+        one_of(PRIMITIVE_NAMES),
+        hint=suggest(word.lower(), PRIMITIVE_NAMES) if word else None,
+    )
+    return None
 
 
 def _sibling_index(r: Reader, m: YMap) -> int | None:

@@ -10,6 +10,7 @@ from unityscaffold.manifest._keys import (
     FLOAT32_MAX,
     GAMEOBJECT_VALUE,
     KEY,
+    PRIMITIVE_NAMES,
     STR,
     Key,
     Section,
@@ -103,6 +104,14 @@ OBJECT = Section(
             "Place among its parent's children (or the scene's root objects), as the "
             "Hierarchy window lists them: 0 is the first. Others keep their order around it.",
             {"type": "integer", "minimum": 0},
+        ),
+        Key(
+            "primitive",
+            "Make it the shape Unity's GameObject > 3D Object menu makes: "
+            + " or ".join(f"`{name}`" for name in PRIMITIVE_NAMES)
+            + " (a MeshFilter with the built-in mesh, a MeshRenderer with Default-Material, "
+            "and the collider). `components` may set their fields.",
+            {"enum": list(PRIMITIVE_NAMES)},
         ),
         Key(
             "components",

@@ -49,13 +49,18 @@ components:
 #    fields: {Topic: /cmd_vel_unity, SubscribedTransform: "@Robot/base_link"}
 
 # GameObjects created if missing and kept as written: position, rotation (Euler degrees),
-# scale, active, tag, layer, ui (RectTransform) and built-in components (Camera, Light,
-# Rigidbody, Box/Sphere/CapsuleCollider, Canvas, CanvasRenderer, AudioListener).
+# scale, active, tag, layer, ui (RectTransform), primitive (plane, cube: as Unity's
+# GameObject > 3D Object menu makes it) and built-in components (Camera, Light, Rigidbody,
+# Box/Sphere/Capsule/MeshCollider, MeshFilter, MeshRenderer, Canvas, CanvasRenderer,
+# AudioListener).
 objects:
 #  - path: Robot/base_link
 #    position: [0, 0.1, 0]
 #    rotation: [0, 90, 0]
 #    components: [Rigidbody, {type: BoxCollider, fields: {m_Size: [0.5, 0.2, 0.8]}}]
+#  - path: Robot/base_link/Screen
+#    primitive: plane
+#    components: [{type: MeshRenderer, fields: {m_Materials: [Default-Material]}}]
 """)
 
 

@@ -4,7 +4,9 @@ Each class lists its serialized fields in Unity's order after ``m_GameObject``, 
 component added in the editor starts with and what the field stores (the kinds of
 ``unity/catalog.py``; ``block`` for a nested mapping that is copied as it is and cannot be set).
 The order and the form were read off scenes Unity 2022.3 saved (ROS#'s sample scenes; the tests
-compare new documents with them byte for byte); the table itself is written here.
+compare new documents with them byte for byte); the table itself is written here, the mesh
+components' in ``_builtin_meshes`` with the primitives and built-in assets. An ``asset:Class``
+field names an asset (``apply/_assets.py``).
 
 Also the built-in tags and layers every project has, which need no ``TagManager.asset``.
 """
@@ -13,13 +15,27 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from unityscaffold.unity._builtin_meshes import (
+    BUILTIN_MATERIALS,
+    BUILTIN_MESHES,
+    MESH_COLLIDER_SHAPE,
+    MESH_LAYOUTS,
+    PRIMITIVES,
+    UNCHECKED_PRIMITIVES,
+    Primitive,
+)
 from unityscaffold.unity.catalog import CatalogField
 
 __all__ = [
     "BUILTIN_LAYERS",
+    "BUILTIN_MATERIALS",
+    "BUILTIN_MESHES",
     "BUILTIN_TAGS",
     "BUILTIN_TYPES",
+    "PRIMITIVES",
+    "UNCHECKED_PRIMITIVES",
     "BuiltinClass",
+    "Primitive",
     "builtin_class",
     "layer_number",
 ]
@@ -45,7 +61,7 @@ _LAYERMASK_ALL = "\n    serializedVersion: 2\n    m_Bits: 4294967295"
 @dataclass(frozen=True, slots=True)
 class _Field:
     name: str
-    kind: str  # int, float, bool, Vector2/3/4, Quaternion, Color, ref:Class, block
+    kind: str  # int, float, bool, Vector2/3/4, Quaternion, Color, ref:Class, asset:Class, block
     default: str  # the text after "name:" (a block starts with a line break)
 
 
@@ -222,6 +238,13 @@ _LAYOUTS: dict[str, tuple[int, tuple[_Field, ...]]] = {
         _collider(_Field("m_Radius", "float", "0.5"), _CENTER, version="3"),
     ),
 }
+
+_LAYOUTS["MeshCollider"] = (
+    64,
+    _collider(*(_Field(*f) for f in MESH_COLLIDER_SHAPE), version="5"),
+)
+for _name, (_class_id, _fields) in MESH_LAYOUTS.items():
+    _LAYOUTS[_name] = (_class_id, tuple(_Field(*f) for f in _fields))
 
 #: The classes a manifest may declare, sorted.
 BUILTIN_TYPES = tuple(sorted(_LAYOUTS))

@@ -1,0 +1,235 @@
+"""An object's `primitive` and the mesh components (MeshFilter, MeshRenderer, MeshCollider):
+written as Unity 2022.3 writes them, compared with objects Unity made with CreatePrimitive —
+the Plane of ROS#'s Gazebo tutorial scene (tests/data, and the hand-made CameraPlane of its
+COMPLETED scene, read from ../shared/vendor) and a Cube of ROS#'s Unity simulation scene — and
+their asset fields naming Unity's built-in resources or the project's assets."""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+import pytest
+from helpers import require, run_cli, snapshot
+
+from unityscaffold.manifest import _keys
+from unityscaffold.unity import builtins
+from unityscaffold.unity.scene import SceneDocument
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "unity" / "ros-sharp"
+REPO = Path(__file__).resolve().parents[2]
+VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
+COMPLETED = (
+    VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1" / "Scenes" / "Completed"
+    / "gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
+)  # fmt: skip
+HEADER = "version: 1\nros: 2\nproject: .\nscene: Assets/Scenes/Main.unity\n"
+# The GUID of the Cube's material in ROS#'s Unity simulation scene.
+CUBE_MATERIAL = "fb5af7f4f42afbf4bb4880e8f14a8d9d"
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    return tmp_path / "p"
+
+
+def _apply(project: Path, body: str, *extra: str):
+    (project / "robot.yaml").write_text(HEADER + body)
+    return run_cli("apply", str(project / "robot.yaml"), *extra)
+
+
+def _scene_path(project: Path) -> Path:
+    return project / "Assets" / "Scenes" / "Main.unity"
+
+
+def _documents(text: str) -> list[str]:
+    return ["--- " + part for part in re.split(r"^--- ", text, flags=re.M)[1:]]
+
+
+def _body(text: str) -> str:
+    """A document without its header line and its m_GameObject (fileIDs differ)."""
+    lines = text.rstrip("\n").split("\n")[1:]
+    return "\n".join(line for line in lines if not line.startswith("  m_GameObject:"))
+
+
+def _real_object(text: str, name: str) -> dict[str, str]:
+    """The components of the GameObject called ``name`` in Unity-written ``text``, by class."""
+    docs = _documents(text)
+    go = next(d for d in docs if d.split("\n")[1] == "GameObject:" and f"  m_Name: {name}\n" in d)
+    go_id = re.match(r"--- !u!1 &(\d+)", go).group(1)  # type: ignore[union-attr]
+    return {
+        d.split("\n")[1].rstrip(":"): d
+        for d in docs
+        if f"  m_GameObject: {{fileID: {go_id}}}\n" in d
+    }
+
+
+def _our_object(project: Path, path: str) -> list[tuple[str, str]]:
+    """(class, document text) of each component of ``path``, in m_Component order."""
+    scene = SceneDocument.load(_scene_path(project))
+    go = scene.find_gameobject(path)
+    found = []
+    for comp in scene.components_of(go):
+        doc = scene.document(comp.file_id)
+        assert doc is not None
+        found.append((comp.type_name, doc.text))
+    return found
+
+
+def test_a_plane_is_the_plane_unity_2022_3_made_with_create_primitive(project):
+    # gazebo_simulation_scene_ROS2_1_Camera.unity's "Plane": GameObject > 3D Object > Plane.
+    real = _real_object((DATA / "gazebo_simulation_scene_ROS2_1_Camera.unity").read_text(), "Plane")
+    run = _apply(project, "objects:\n  - {path: Floor, primitive: plane}\n")
+    assert run.code == 0, run.err
+    ours = _our_object(project, "Floor")
+    assert [c for c, _ in ours] == ["Transform", "MeshFilter", "MeshRenderer", "MeshCollider"]
+    for class_name, text in ours[1:]:
+        assert _body(text) == _body(real[class_name]), class_name
+
+
+def test_a_cube_is_the_cube_unity_2022_3_made_its_material_named_by_path(project):
+    # UnitySimulationScene.unity's "Cube", whose renderer holds the project's material.
+    real = _real_object((DATA / "UnitySimulationScene.cube.documents.txt").read_text(), "Cube")
+    mat = project / "Assets" / "Materials" / "Blue.mat"
+    mat.parent.mkdir(parents=True)
+    mat.write_text("%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!21 &2100000\nMaterial:\n")
+    Path(f"{mat}.meta").write_text(f"fileFormatVersion: 2\nguid: {CUBE_MATERIAL}\n")
+    run = _apply(
+        project,
+        "objects:\n  - path: Cube\n    primitive: cube\n    components:\n"
+        "      - {type: MeshRenderer, fields: {m_Materials: [Assets/Materials/Blue.mat]}}\n",
+    )
+    assert run.code == 0, run.err
+    ours = _our_object(project, "Cube")
+    assert [c for c, _ in ours] == ["Transform", "MeshFilter", "MeshRenderer", "BoxCollider"]
+    for class_name, text in ours[1:]:
+        assert _body(text) == _body(real[class_name]), class_name
+
+
+def test_the_tutorials_camera_plane_is_its_completed_scenes(project):
+    # The CameraPlane a person added under r2d2's box in ROS#'s step-1 COMPLETED scene.
+    require(COMPLETED.is_file(), f"ROS#'s r2d2 sample scene ({COMPLETED})")
+    real = _real_object(COMPLETED.read_text(encoding="utf-8"), "CameraPlane")
+    run = _apply(
+        project,
+        "objects:\n  - path: r2d2/base_link/box/CameraPlane\n    primitive: plane\n"
+        "    position: [0, 0.6, 2.26]\n    rotation: [90, 180, 0]\n"
+        "    scale: [0.37296, 1, 0.3]\n    components:\n"
+        "      - {type: MeshRenderer, fields: {m_CastShadows: 0}}\n"
+        "      - {type: MeshCollider, fields: {m_Convex: true}}\n",
+    )
+    assert run.code == 0, run.err
+    ours = dict(_our_object(project, "r2d2/base_link/box/CameraPlane"))
+    for class_name in ("MeshFilter", "MeshRenderer", "MeshCollider"):
+        assert _body(ours[class_name]) == _body(real[class_name]), class_name
+    again = _apply(project, (project / "robot.yaml").read_text()[len(HEADER) :], "--check")
+    assert again.code == 0, again.out
+
+
+def test_a_primitive_is_a_fixed_point_and_a_changed_mesh_is_drift(project):
+    body = "objects:\n  - {path: Floor, primitive: plane}\n"
+    assert _apply(project, body).code == 0
+    scene = _scene_path(project)
+    first = scene.read_bytes()
+    assert _apply(project, body).code == 0
+    assert scene.read_bytes() == first
+    scene.write_bytes(first.replace(b"fileID: 10209,", b"fileID: 10202,", 1))
+    check = _apply(project, body, "--check")
+    assert check.code == 1, check.out
+    assert _apply(project, body).code == 0
+    assert scene.read_bytes() == first
+
+
+def test_mesh_components_declared_alone_take_built_in_and_project_assets(project):
+    mesh = project / "Assets" / "Meshes" / "Part_0.asset"
+    mesh.parent.mkdir(parents=True)
+    mesh.write_text("%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!43 &4300000\nMesh:\n")
+    Path(f"{mesh}.meta").write_text(
+        "fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n"
+    )
+    run = _apply(
+        project,
+        "objects:\n  - path: Part\n    components:\n"
+        "      - {type: MeshFilter, fields: {m_Mesh: Assets/Meshes/Part_0.asset}}\n"
+        "      - {type: MeshRenderer, fields: {m_Materials: [Default-Material, null]}}\n"
+        "      - {type: MeshCollider, fields: {m_Mesh: Sphere, m_Convex: true}}\n",
+    )
+    assert run.code == 0, run.err
+    ours = dict(_our_object(project, "Part"))
+    assert (
+        "  m_Mesh: {fileID: 4300000, guid: 0123456789abcdef0123456789abcdef, type: 2}\n"
+        in ours["MeshFilter"]
+    )
+    assert (
+        "  m_Materials:\n  - {fileID: 10303, guid: 0000000000000000f000000000000000, type: 0}\n"
+        "  - {fileID: 0}\n" in ours["MeshRenderer"]
+    )
+    assert (
+        "  m_Mesh: {fileID: 10207, guid: 0000000000000000e000000000000000, type: 0}\n"
+        in ours["MeshCollider"]
+    )
+
+
+BAD = [
+    ("objects:\n  - {path: Ball, primitive: sphere}\n", "robot.yaml:6:",
+     "a sphere primitive is not made yet"),
+    ("objects:\n  - {path: Ball, primitive: Plane}\n", "robot.yaml:6:", "did you mean 'plane'?"),
+    ("objects:\n  - path: Ball\n    primitive: cube\n    components:\n"
+     "      - {type: MeshFilter, fields: {m_Mesh: Sphere}}\n", "robot.yaml:9:", "m_Mesh of a cube"),
+    ("objects:\n  - path: P\n    components:\n"
+     "      - {type: MeshFilter, fields: {m_Mesh: Capsule}}\n",
+     "robot.yaml:8:", "m_Mesh expects Mesh assets, not 'Capsule'"),
+    ("objects:\n  - path: P\n    components:\n"
+     "      - {type: MeshFilter, fields: {m_Mesh: Assets/None.asset}}\n",
+     "robot.yaml:8:", "no file Assets/None.asset in the project"),
+    ("objects:\n  - path: P\n    components:\n"
+     "      - {type: MeshRenderer, fields: {m_Materials: [Assets/../x.mat]}}\n",
+     "robot.yaml:8:", "is not a .mat file inside the project"),
+    ("objects:\n  - path: P\n    components:\n"
+     "      - {type: MeshRenderer, fields: {m_Materials: Default-Material}}\n",
+     "robot.yaml:8:", "expects a list of Material assets"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("body", "where", "message"), BAD, ids=[b[2] for b in BAD])
+def test_a_bad_primitive_or_asset_stops_at_its_line_and_writes_nothing(
+    project, body, where, message
+):
+    before = snapshot(project)
+    run = _apply(project, body)
+    assert run.code == 2, run.out + run.err
+    assert where in run.err and message in run.err, run.err
+    assert snapshot(project) == {**before, "robot.yaml": (HEADER + body).encode()}
+
+
+def test_an_asset_without_a_meta_or_of_another_class_is_refused(project):
+    mat = project / "Assets" / "Red.mat"
+    mat.write_text("%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!21 &2100000\nMaterial:\n")
+    body = (
+        "objects:\n  - path: P\n    components:\n      - {type: MeshFilter, fields: {m_Mesh: X}}\n"
+    )
+    run = _apply(project, body.replace("X", "Assets/Red.mat"))
+    assert run.code == 2 and "is not a .asset file" in run.err, run.err
+    run = _apply(
+        project,
+        body.replace("MeshFilter", "MeshRenderer").replace(
+            "m_Mesh: X", "m_Materials: [Assets/Red.mat]"
+        ),
+    )
+    assert run.code == 2 and "Assets/Red.mat has no .meta file" in run.err, run.err
+    Path(f"{mat}.meta").write_text("fileFormatVersion: 2\nguid: 0123456789abcdef0123456789abcdef\n")
+    mat.write_text("%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!43 &4300000\nMesh:\n")
+    run = _apply(
+        project,
+        body.replace("MeshFilter", "MeshRenderer").replace(
+            "m_Mesh: X", "m_Materials: [Assets/Red.mat]"
+        ),
+    )
+    assert run.code == 2 and "Assets/Red.mat holds no Material" in run.err, run.err
+
+
+def test_the_manifest_offers_exactly_the_primitives_the_unity_stage_makes():
+    assert set(_keys.PRIMITIVE_NAMES) == set(builtins.PRIMITIVES)
+    assert set(_keys.UNCHECKED_PRIMITIVE_NAMES) == set(builtins.UNCHECKED_PRIMITIVES)
