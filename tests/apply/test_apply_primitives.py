@@ -106,6 +106,8 @@ def test_a_cube_is_the_cube_unity_2022_3_made_its_material_named_by_path(project
     assert [c for c, _ in ours] == ["Transform", "MeshFilter", "MeshRenderer", "BoxCollider"]
     for class_name, text in ours[1:]:
         assert _body(text) == _body(real[class_name]), class_name
+    check = run_cli("apply", "--check", str(project / "robot.yaml"))
+    assert check.code == 0, check.out
 
 
 def test_the_tutorials_camera_plane_is_its_completed_scenes(project):
