@@ -1,5 +1,5 @@
 """An object's `primitive` and the mesh components (MeshFilter, MeshRenderer, MeshCollider):
-written as Unity 2022.3 writes them, compared with objects Unity made with CreatePrimitive —
+written as Unity 2022.3 writes them, compared with objects Unity 2022.3's 3D Object menu made —
 the Plane of ROS#'s Gazebo tutorial scene (tests/data, and the hand-made CameraPlane of its
 COMPLETED scene, read from ../shared/vendor) and a Cube of ROS#'s Unity simulation scene — and
 their asset fields naming Unity's built-in resources or the project's assets."""

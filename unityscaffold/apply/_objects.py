@@ -145,7 +145,7 @@ def _builtin_values(
 
 
 def _declared_components(item: SceneObject) -> tuple[BuiltinComponent, ...]:
-    """The primitive's components (first, as CreatePrimitive adds them), then the entry's."""
+    """The primitive's components (first, as Unity's menu adds them), then the entry's."""
     return (*primitive_components(item), *item.components)
 
 

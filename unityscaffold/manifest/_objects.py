@@ -61,7 +61,7 @@ def _primitive(r: Reader, m: YMap, components: tuple[BuiltinComponent, ...]) -> 
     if value in UNCHECKED_PRIMITIVE_NAMES:
         r.error(
             entry.value.location,
-            f"a {value} primitive is not made yet: CreatePrimitive fits its collider to the "
+            f"a {value} primitive is not made yet: Unity fits its collider to the "
             "mesh, and no file Unity wrote has been checked for the values it gets",
             expected=one_of(PRIMITIVE_NAMES),
             hint="make it in Unity (GameObject > 3D Object), or declare its MeshFilter, "

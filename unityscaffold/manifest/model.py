@@ -300,7 +300,7 @@ class SceneObject:
     Euler angles in degrees (Unity's Z, then X, then Y order); ``layer`` is 0–31; ``ui`` is None
     for a plain Transform, else the RectTransform's layout; ``sibling_index`` its place among its
     siblings (0 first), None to leave it where it is; ``primitive`` the shape whose components
-    Unity's ``GameObject.CreatePrimitive`` adds (``plane``), kept before ``components``.
+    Unity's GameObject > 3D Object menu adds (``plane``), kept before ``components``.
     """
 
     path: str
@@ -315,7 +315,7 @@ class SceneObject:
     components: tuple[BuiltinComponent, ...]
     locations: Locations
     sibling_index: int | None = None  # its place among its parent's children or the roots
-    primitive: str | None = None  # "plane", "cube": the components CreatePrimitive adds
+    primitive: str | None = None  # "plane", "cube": what the 3D Object menu adds
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,10 +1,12 @@
 """The mesh components a manifest may declare (MeshFilter, MeshRenderer, MeshCollider), laid out
 as Unity 2022.3 serializes them, and the built-in resources their asset fields may name.
 
-The layouts and defaults are those of the objects Unity 2022.3's ``GameObject.CreatePrimitive``
+The layouts and defaults are those of the objects Unity 2022.3's GameObject > 3D Object menu
 made in scenes it saved (a Plane's MeshFilter, MeshRenderer and MeshCollider; a Cube's); the
 tests compare new documents with them byte for byte. A MeshRenderer therefore starts with
-Unity's Default-Material, as a primitive does; a MeshCollider with no mesh.
+Unity's Default-Material, as a primitive does; a MeshCollider with no mesh. (``CreatePrimitive``
+called from an editor script, as ROS#'s URDF importer calls it, leaves ``m_PreserveUVs: 1`` on
+the renderer instead: 12 of 12 such renderers in ROS#'s r2d2 scene; the menu's have 0.)
 """
 
 from __future__ import annotations
@@ -99,7 +101,7 @@ MESH_COLLIDER_SHAPE = (
 
 @dataclass(frozen=True, slots=True)
 class Primitive:
-    """What ``GameObject.CreatePrimitive`` puts on a new object after its Transform: a MeshFilter
+    """What the 3D Object menu puts on a new object after its Transform: a MeshFilter
     with ``mesh``, a MeshRenderer, and ``collider`` with the values it is given (the others
     keep a new collider's)."""
 
@@ -108,15 +110,15 @@ class Primitive:
     collider_fields: tuple[tuple[str, str], ...] = ()
 
 
-#: The primitives whose every component was checked against objects Unity 2022.3 made with
-#: CreatePrimitive: a Plane (ROS#'s Gazebo tutorial scene) and Cubes (ROS#'s Unity simulation
+#: The primitives whose every component was checked against objects Unity 2022.3's menu made:
+#: a Plane (ROS#'s Gazebo tutorial scene) and Cubes (ROS#'s Unity simulation
 #: scene). Sphere, Cylinder, Capsule and Quad have no such example here (ROS#'s importer
 #: destroys their colliders; Unity fits a collider to the mesh's bounds, which is not guessed).
 PRIMITIVES = {
     "plane": Primitive("Plane", "MeshCollider", (("m_Mesh", "Plane"),)),
     "cube": Primitive("Cube", "BoxCollider"),
 }
-#: Primitives Unity has that apply refuses, with the collider CreatePrimitive gives each.
+#: Primitives Unity has that apply refuses, with the collider Unity gives each.
 UNCHECKED_PRIMITIVES = {
     "sphere": ("Sphere", "SphereCollider"),
     "cylinder": ("Cylinder", "CapsuleCollider"),
