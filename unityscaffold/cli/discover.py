@@ -21,14 +21,17 @@ from unityscaffold.manifest import edit
 _HELP = (
     "Read topics, services, actions and their definitions from a running ROS system or a "
     "bag.\n\n"
-    "The definitions are written as .msg (and .action) files to a cache folder next to the "
-    "manifest (ROS 1 md5sums checked against the system's), and the topics, services and "
-    "(ROS 1) actions are added to the manifest, keeping its comments and layout. With --print, "
-    "a manifest fragment is printed instead. Without MANIFEST, robot.yaml in this folder or the "
-    "nearest folder above it (up to the repository's root) is used.\n\n"
+    "The definitions are written as .msg (and .srv, .action) files to a cache folder next to "
+    "the manifest (checked against the system's ROS 1 md5sums or ROS 2 RIHS01 hashes), and the "
+    "topics, services and actions are added to the manifest, keeping its comments and layout. "
+    "With --print, a manifest fragment is printed instead. Without MANIFEST, robot.yaml in this "
+    "folder or the nearest folder above it (up to the repository's root) is used.\n\n"
+    "--ros2 joins the ROS 2 graph itself (no rosbridge needed; the `ros2` extra installs "
+    "rclpy): ROS_DOMAIN_ID and the other ROS 2 variables of this shell apply.\n\n"
     "Examples:\n\n"
     "  scaffold discover --master http://robot:11311\n\n"
     "  scaffold discover my_robot/robot.yaml --rosbridge ws://robot:9090\n\n"
+    "  scaffold discover --ros2 --select '^/robot/'\n\n"
     "  scaffold discover --bag run1.mcap --print"
 )
 
@@ -54,6 +57,9 @@ def discover_command(
     bag: Path | None = typer.Option(
         None, "--bag", metavar="FILE", help="A ROS 1 .bag, a ROS 2 .db3/.mcap file or bag folder."
     ),
+    ros2: bool = typer.Option(
+        False, "--ros2", help="The ROS 2 graph this machine sees, through rclpy (no rosbridge)."
+    ),
     select: str | None = typer.Option(
         None, "--select", metavar="REGEX", help="Only names this regular expression matches."
     ),
@@ -63,7 +69,8 @@ def discover_command(
     everything: bool = typer.Option(
         False,
         "--all",
-        help="Include ROS plumbing (/rosout, /rosapi/*, logger and parameter services).",
+        help="Include ROS plumbing (/rosout, /rosapi/*, rosbridge's /client_count, logger and "
+        "parameter services, ROS 2 hidden names).",
     ),
     cache: Path | None = typer.Option(
         None,
@@ -79,23 +86,37 @@ def discover_command(
     timeout: float = typer.Option(
         2.0, "--timeout", min=0.05, metavar="SECONDS", help="Time limit of each network step."
     ),
+    wait: float = typer.Option(
+        5.0,
+        "--wait",
+        min=0.1,
+        metavar="SECONDS",
+        help="--ros2: the longest wait for the graph to settle (it stops early once it does).",
+    ),
     progress: bool = typer.Option(
         False, "--progress", help="Show progress on stderr even when it is not a terminal."
     ),
 ) -> None:
-    if sum(s is not None for s in (master, rosbridge, bag)) != 1:
-        raise UserError("give exactly one source: --master URL, --rosbridge URL or --bag FILE")
+    if sum(s is not None for s in (master, rosbridge, bag)) + ros2 != 1:
+        raise UserError(
+            "give exactly one source: --master URL, --rosbridge URL, --ros2 or --bag FILE"
+        )
     manifest = find_manifest(given)
     text = _manifest_text(manifest, required=not print_fragment)
     cache = cache if cache is not None else manifest.parent / "ros_definitions"
+    base = manifest.parent
+    folders = edit.interface_folders(text or "", base)
     found = live.discover(
         master_url=master,
         rosbridge_url=rosbridge,
         bag=bag,
+        ros2=ros2,
         timeout=timeout,
+        wait=wait,
         names=live.NameFilter.of(select, exclude, include_system=everything),
         dialect=_manifest_dialect(text),
         progress=_progress_printer(progress),
+        search_paths=folders,
     )
     entry = Path(os.path.relpath(cache, manifest.parent)).as_posix()
     if print_fragment:
@@ -103,8 +124,7 @@ def discover_command(
     else:
         assert text is not None
         changes = edit.edit_manifest(text, found, cache_entry=entry, path=str(manifest))
-    base = manifest.parent
-    staged = stage_definitions(found, cache, search_paths=edit.interface_folders(text or "", base))
+    staged = stage_definitions(found, cache, search_paths=folders)
     _finish(staged, manifest, changes, dry_run=dry_run, write_manifest=not print_fragment)
     _report(
         found,

@@ -1,13 +1,15 @@
 """Live and recorded ROS systems as interface sources: what ``scaffold discover`` reads.
 
-Three sources feed one result model (``Discovery``): a ROS 1 master with TCPROS probes of its
-nodes (``master``), a rosbridge's rosapi (``rosbridge``), and bag files (``bag``).
+Four sources feed one result model (``Discovery``): a ROS 1 master with TCPROS probes of its
+nodes (``master``), a rosbridge's rosapi (``rosbridge``), bag files (``bag``), and the ROS 2
+graph itself through rclpy (``_ros2``, an optional extra).
 ``definitions`` turns the full definition texts they report back into ``.msg`` files in a
 definitions cache, verifying ROS 1 md5sums on the way.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 from unityscaffold.errors import UserError
@@ -56,21 +58,28 @@ def discover(
     master_url: str | None = None,
     rosbridge_url: str | None = None,
     bag: Path | None = None,
+    ros2: bool = False,
     timeout: float = 2.0,
+    wait: float = 5.0,
     names: NameFilter | None = None,
     dialect: Dialect | None = None,
     progress: Progress | None = None,
+    search_paths: Sequence[Path] = (),
 ) -> Discovery:
-    """Read one source; exactly one of ``master_url``, ``rosbridge_url`` and ``bag``.
+    """Read one source; exactly one of ``master_url``, ``rosbridge_url``, ``bag`` and ``ros2``.
 
     In ROS 1, each complete set of actionlib topics comes back as one action, not as topics.
+    ``wait`` bounds the ROS 2 graph's discovery; ``search_paths`` (with the environment) are
+    where ROS 2 types need no description from the nodes.
     """
     from unityscaffold.interfaces.live import _master, _rosbridge
 
-    chosen = [s for s in (master_url, rosbridge_url, bag) if s is not None]
+    chosen = [s for s in (master_url, rosbridge_url, bag) if s is not None] + [ros2] * ros2
     if len(chosen) != 1:
-        raise UserError("give exactly one of --master, --rosbridge and --bag")
+        raise UserError("give exactly one of --master, --rosbridge, --bag and --ros2")
     names = names or NameFilter()
+    if ros2:
+        return _discover_graph(wait, timeout, names, search_paths, progress)
     if master_url is not None:
         found = _master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
     elif rosbridge_url is not None:
@@ -81,6 +90,29 @@ def discover(
         assert bag is not None
         found = _discover_bag(Path(bag), names)
     return group_actions(found)
+
+
+def _discover_graph(
+    wait: float,
+    timeout: float,
+    names: NameFilter,
+    search_paths: Sequence[Path],
+    progress: Progress | None,
+) -> Discovery:
+    from unityscaffold.interfaces.live._installed import with_installed_files
+    from unityscaffold.interfaces.live._ros2 import discover_graph
+    from unityscaffold.interfaces.registry import Registry
+
+    local = Registry.load(Dialect.ROS2, search_paths)
+
+    def known(type_name: str) -> bool:
+        try:
+            return local.find(type_name) is not None
+        except UserError:  # a local file that does not parse: ask the node instead
+            return False
+
+    found = discover_graph(wait=wait, timeout=timeout, names=names, known=known, progress=progress)
+    return with_installed_files(found, search_paths)
 
 
 def _discover_bag(bag: Path, names: NameFilter) -> Discovery:

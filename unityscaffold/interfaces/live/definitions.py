@@ -4,7 +4,8 @@ A full definition is the root type's text followed, for each type it uses, by a 
 ``=``, ``MSG: pkg/Type`` (ROS 2 sources may write ``pkg/msg/Type``) and that type's text, so
 splitting at those separators gives each file back byte for byte. The files are written to
 ``<cache>/<pkg>/msg/<Type>.msg`` in a staging folder next to the cache; each ROS 1 type whose
-md5sum the system reported is checked against the md5sum of its reconstruction, and only when
+md5sum the system reported is checked against the md5sum of its reconstruction (each ROS 2 type
+the graph reported a RIHS01 hash for, against that hash, ``_rihs``), and only when
 everything checks out does the staging folder replace the cache.
 
 A ROS 1 action's topics carry genaction's messages (``XActionGoal``, ``XGoal``, …), not the
@@ -23,6 +24,7 @@ from pathlib import Path
 
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
+from unityscaffold.interfaces.live._rihs import check_type_hashes
 from unityscaffold.interfaces.live.model import (
     DiscoveredAction,
     DiscoveredService,
@@ -127,6 +129,10 @@ def collect(discovery: Discovery) -> list[Definition]:
     for action in discovery.actions:
         for definition in _action_definitions(action):
             found.setdefault(definition.relative_path, definition)
+    for relative, text in discovery.files:
+        package, kind, file_name = relative.split("/")
+        definition = Definition(package, file_name.rsplit(".", 1)[0], text, kind)
+        found.setdefault(definition.relative_path, definition)
     return [found[path] for path in sorted(found)]
 
 
@@ -180,7 +186,7 @@ def stage_definitions(
     """Write the discovered definitions over a copy of ``cache`` and verify them.
 
     Raises ``UserError`` naming the type when a reconstruction does not parse or its md5sum
-    differs from the one the system reported; nothing is left behind then.
+    (ROS 2: RIHS01 hash) differs from the one the system reported; nothing is left behind then.
     """
     definitions = collect(discovery)
     cache.parent.mkdir(parents=True, exist_ok=True)
@@ -222,6 +228,8 @@ def _verify(discovery: Discovery, staging: Path, search_paths: Sequence[Path]) -
             )
     for action in discovery.actions:
         warnings.extend(_verify_action(action, discovery.origin, own, wider))
+    if discovery.dialect is Dialect.ROS2:
+        check_type_hashes(discovery, own, wider)
     return warnings
 
 
@@ -233,6 +241,11 @@ def _verify_action(
     reconstructed = _is_action(own, action.type, origin)
     registry = own if reconstructed else wider
     if not reconstructed and not _is_action(wider, action.type, origin):
+        if not action.topics:  # ROS 2: the graph names the action's type, never its text
+            return [
+                f"no definition of {action.type} (used by {action.name}): add the folder "
+                "with its package to the manifest's interfaces, or install its package"
+            ]
         return [
             f"no definition of {action.type} (used by {action.name}): its goal, result and "
             "feedback texts did not all come (a ROS 1 node sends the texts of what it publishes "

@@ -105,11 +105,13 @@ class DiscoveredService:
 
 @dataclass(frozen=True, slots=True)
 class DiscoveredAction:
-    """A ROS 1 action: actionlib's five topics under ``name``, found together.
+    """An action: in ROS 1 actionlib's five topics under ``name``, found together; in ROS 2
+    one graph entry (its hidden topics and services are not listed).
 
     ``role`` is Unity's (``client`` when the ROS system serves the action, ``server`` when it
-    only sends goals), ``None`` when the graph cannot tell. ``topics`` are the five topics as
-    discovered (goal, cancel, status, feedback, result), for their definitions and md5sums.
+    only sends goals), ``None`` when the graph cannot tell. ``topics`` are ROS 1's five topics
+    as discovered (goal, cancel, status, feedback, result), for their definitions and md5sums;
+    empty in ROS 2.
     """
 
     name: str
@@ -136,6 +138,10 @@ class Discovery:
     services: tuple[DiscoveredService, ...] = ()
     warnings: tuple[str, ...] = ()
     actions: tuple[DiscoveredAction, ...] = ()
+    # ROS 2: (type, RIHS01 hash, the topic, service or action it was reported for)
+    type_hashes: tuple[tuple[str, str, str], ...] = ()
+    # ROS 2: definition files as a local package holds them, (path under the cache, text)
+    files: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "topics", tuple(sorted(self.topics, key=lambda t: t.name)))
@@ -149,6 +155,8 @@ class Discovery:
             "topics": [t.to_json() for t in self.topics],
             "services": [s.to_json() for s in self.services],
             "actions": [a.to_json() for a in self.actions],
+            "type_hashes": [{"type": t, "hash": h, "used_by": n} for t, h, n in self.type_hashes],
+            "definition_files": [path for path, _ in self.files],
             "warnings": list(self.warnings),
         }
 
