@@ -72,6 +72,9 @@ class FakeRosbridge:
             return {"type": SERVICES.get(args["service"], "")}
         if service == "/rosapi/message_details":
             return {"typedefs": self.truth[args["type"]]["typedefs"]}
+        if service in ("/rosapi/service_request_details", "/rosapi/service_response_details"):
+            half = "request" if "request" in service else "response"
+            return {"typedefs": self.truth[args["type"]][half]["typedefs"]}
         raise KeyError(f"service [{service}] does not exist")
 
     def handle(self, connection: ServerConnection) -> None:

@@ -52,6 +52,48 @@ def test_empty_full_texts_fall_back_to_message_details(
     assert Ros1Identity(alone).md5sum(imu) == bridge.truth["sensor_msgs/Imu"]["md5sum"]
 
 
+def test_service_definitions_are_rebuilt_from_request_and_response_details(
+    bridge: FakeRosbridge, tmp_path: Path
+) -> None:
+    found = discover(
+        rosbridge_url=bridge.url, timeout=FAST, names=NameFilter.of(select="^/(calibrate|trigger)$")
+    )
+    assert found.warnings == ()
+    # std_srvs/Trigger is defined locally (the built-in set): its file is left to that.
+    assert bridge.calls.count("/rosapi/service_request_details") == 1
+    calibrate = next(s for s in found.services if s.name == "/calibrate")
+    assert (
+        calibrate.definition
+        == "float64 gain\nscaffold_test_msgs/Sample reference\n---\nbool success\nstring message\n"
+    )
+    stage_definitions(found, tmp_path / "cache").commit()
+    alone = Registry.load(
+        Dialect.ROS1, [tmp_path / "cache"], use_environment=False, use_builtin=False
+    )
+    spec = alone.get("scaffold_test_msgs/Calibrate")
+    assert (
+        Ros1Identity(alone).md5sum(spec) == bridge.truth["scaffold_test_msgs/Calibrate"]["md5sum"]
+    )
+
+
+def test_a_failing_details_call_is_a_warning_and_ends_the_asking(
+    bridge: FakeRosbridge,
+) -> None:
+    bridge.faults["/rosapi/topics_and_raw_types"] = "empty_text"
+    bridge.faults["/rosapi/message_details"] = "fail"
+    found = discover(
+        rosbridge_url=bridge.url,
+        timeout=FAST,
+        names=NameFilter.of(select="^/(imu|chatter|calibrate)$"),
+    )
+    assert bridge.calls.count("/rosapi/message_details") == 1
+    assert "/rosapi/service_request_details" not in bridge.calls
+    assert [t.definition for t in found.topics] == [None, None]
+    assert found.services[0].definition is None
+    assert len(found.warnings) == 3
+    assert any("not asked, rosapi failed before" in w and "Calibrate" in w for w in found.warnings)
+
+
 def test_unknown_directions_are_a_warning_not_an_error(bridge: FakeRosbridge) -> None:
     bridge.faults["/rosapi/publishers"] = "fail"
     found = discover(rosbridge_url=bridge.url, timeout=FAST)

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.live._actions import group_actions
+from unityscaffold.interfaces.live._installed import local_types, with_installed_files
 from unityscaffold.interfaces.live.model import (
     Direction,
     DiscoveredAction,
@@ -84,7 +85,12 @@ def discover(
         found = _master.discover_master(master_url, timeout=timeout, names=names, progress=progress)
     elif rosbridge_url is not None:
         found = _rosbridge.discover_rosbridge(
-            rosbridge_url, timeout=timeout, names=names, dialect=dialect, progress=progress
+            rosbridge_url,
+            timeout=timeout,
+            names=names,
+            dialect=dialect,
+            progress=progress,
+            known=lambda found: local_types(found, search_paths),
         )
     else:
         assert bag is not None
@@ -99,18 +105,9 @@ def _discover_graph(
     search_paths: Sequence[Path],
     progress: Progress | None,
 ) -> Discovery:
-    from unityscaffold.interfaces.live._installed import with_installed_files
     from unityscaffold.interfaces.live._ros2 import discover_graph
-    from unityscaffold.interfaces.registry import Registry
 
-    local = Registry.load(Dialect.ROS2, search_paths)
-
-    def known(type_name: str) -> bool:
-        try:
-            return local.find(type_name) is not None
-        except UserError:  # a local file that does not parse: ask the node instead
-            return False
-
+    known = local_types(Dialect.ROS2, search_paths)
     found = discover_graph(wait=wait, timeout=timeout, names=names, known=known, progress=progress)
     return with_installed_files(found, search_paths)
 

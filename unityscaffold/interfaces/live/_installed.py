@@ -10,7 +10,7 @@ as local go to the definitions cache, byte for byte, as ROS 1's rebuilt texts do
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from unityscaffold.errors import UserError
@@ -18,7 +18,21 @@ from unityscaffold.interfaces.live.model import Discovery
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 
-__all__ = ["with_installed_files"]
+__all__ = ["local_types", "with_installed_files"]
+
+
+def local_types(dialect: Dialect, search_paths: Sequence[Path]) -> Callable[[str], bool]:
+    """Whether a type is defined by the manifest's folders, the environment or the built-in
+    set: such a type needs no definition from the system."""
+    local = Registry.load(dialect, search_paths)
+
+    def known(type_name: str) -> bool:
+        try:
+            return local.find(type_name) is not None
+        except UserError:  # a local file that does not parse: ask the system instead
+            return False
+
+    return known
 
 
 def with_installed_files(discovery: Discovery, search_paths: Sequence[Path]) -> Discovery:

@@ -12,7 +12,7 @@ from typing import Any
 
 from unityscaffold.errors import UserError
 
-__all__ = ["full_text_from_typedefs"]
+__all__ = ["full_text_from_typedefs", "texts_from_typedefs"]
 
 _IDL_TO_MSG = {
     "double": "float64",
@@ -65,8 +65,8 @@ def _strings(typedef: Mapping[str, Any], key: str) -> list[str]:
     return value
 
 
-def full_text_from_typedefs(root: str, typedefs: Sequence[Any]) -> str:
-    """A full definition text (as rosapi's ``typedefs_full_text`` would give) for ``root``.
+def texts_from_typedefs(typedefs: Sequence[Any]) -> dict[str, str]:
+    """Each TypeDef's ``.msg`` text by type name (``pkg/Type``), in the list's order.
 
     Raises ``ValueError`` for malformed TypeDefs, ``UserError`` for ones that cannot be rebuilt.
     """
@@ -78,6 +78,15 @@ def full_text_from_typedefs(root: str, typedefs: Sequence[Any]) -> str:
         if name in ("time", "duration"):
             continue  # rosapi mocks these builtins as secs/nsecs records
         texts.setdefault(name, _text(typedef))
+    return texts
+
+
+def full_text_from_typedefs(root: str, typedefs: Sequence[Any]) -> str:
+    """A full definition text (as rosapi's ``typedefs_full_text`` would give) for ``root``.
+
+    Raises ``ValueError`` for malformed TypeDefs, ``UserError`` for ones that cannot be rebuilt.
+    """
+    texts = texts_from_typedefs(typedefs)
     root_name = _short(root)
     if root_name not in texts:
         raise ValueError(f"the TypeDefs do not include {root}")

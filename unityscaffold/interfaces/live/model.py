@@ -32,8 +32,10 @@ __all__ = [
 Progress = Callable[[int, int, str], None]
 
 # Plumbing every ROS node or bridge brings along; nobody wants a Unity script for these.
+# rosbridge 2.x publishes /client_count and /connected_clients itself.
 _SYSTEM_NAMES = re.compile(
     r"^/rosout(_agg)?$|^/parameter_events$|^/rosapi(/|$)|^/rosbridge_websocket(/|$)"
+    r"|^/client_count$|^/connected_clients$"
     r"|/(get_loggers|set_logger_level|describe_parameters|get_parameters|get_parameter_types"
     r"|list_parameters|set_parameters|set_parameters_atomically|get_type_description)$"
 )
