@@ -65,6 +65,12 @@ def test_topics_types_directions_definitions_and_services(
         ("/set_speed_limit", "diffbot_msgs/SetSpeedLimit"),
         ("/trigger", "std_srvs/Trigger"),
     ]
+    # No .srv text crosses ROS 1: a type defined nowhere here (diffbot_msgs) is rebuilt from
+    # rosapi's request and response details (fields only); std_srvs is left to its file.
+    assert [s.definition for s in found.services] == [
+        "float32 max_linear\n---\nbool success\nstring message\n",
+        None,
+    ]
     # Unfiltered: rosbridge's and rosapi's own topics and services are left out by default.
     everything = discover(rosbridge_url=bridge.url, timeout=5)
     assert set(topics) <= {t.name for t in everything.topics}
@@ -119,14 +125,15 @@ def test_staged_definitions_reproduce_genpy_md5sums(
         spec = alone.message(topic.type)
         assert identity.md5sum(spec) == truth[topic.type]["md5sum"], topic.type
         assert identity.full_text(spec) == truth[topic.type]["definition"], topic.type
-    # Services: ROS 1 never sends a .srv text; their types resolve from the sources we read
-    # (the sample's workspace, Debian's share) with the md5sum rospy serves them under.
-    sample = Path(__file__).resolve().parents[2] / "sample_project" / "ros_ws" / "src"
-    local = Registry.load(Dialect.ROS1, [sample], use_builtin=False)
-    for service in found.services:
-        spec = local.get(service.type)
-        assert isinstance(spec, ServiceSpec)
-        assert Ros1Identity(local).md5sum(spec) == truth[service.type]["md5sum"], service.type
+    # Services: the one rebuilt from rosapi's details has the md5sum rospy serves it under,
+    # from the cache alone; std_srvs/Trigger resolves from Debian's share with its md5sum.
+    rebuilt = alone.get("diffbot_msgs/SetSpeedLimit")
+    assert isinstance(rebuilt, ServiceSpec)
+    assert identity.md5sum(rebuilt) == truth["diffbot_msgs/SetSpeedLimit"]["md5sum"]
+    local = Registry.load(Dialect.ROS1, use_builtin=False)
+    trigger = local.get("std_srvs/Trigger")
+    assert isinstance(trigger, ServiceSpec)
+    assert Ros1Identity(local).md5sum(trigger) == truth["std_srvs/Trigger"]["md5sum"]
 
 
 def test_discover_then_apply_without_the_workspace(
@@ -144,12 +151,10 @@ def test_discover_then_apply_without_the_workspace(
         "5",
         "--select",
         f"{OURS}|{ACTIONS}",
-        "--exclude",
-        "set_speed_limit",  # its .srv text never crosses ROS 1, and no workspace is given
         "--progress",
     )
     assert found.code == 0, found.err
-    assert "probing 16/16" in found.err  # 5 topics, 1 service, 2 actions of 5 topics
+    assert "probing 17/17" in found.err  # 5 topics, 2 services, 2 actions of 5 topics
     text = manifest.read_text()
     assert "- {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish" in text
     assert "- {name: /base_status, type: diffbot_msgs/BaseStatus, direction: subscribe" in text
@@ -161,6 +166,7 @@ def test_discover_then_apply_without_the_workspace(
     assert "Assets/RosGenerated/Messages/Diffbot/msg/BaseStatus.cs" in files
     assert "Assets/RosGenerated/Scripts/BaseStatusSubscriber.cs" in files
     assert "Assets/RosGenerated/Scripts/TriggerClient.cs" in files
+    assert "Assets/RosGenerated/Scripts/SetSpeedLimitClient.cs" in files
     assert "Assets/RosGenerated/Scripts/DockActionClient.cs" in files
     assert "Assets/RosGenerated/Scripts/ChargerDockActionServer.cs" in files
     compile_applied_project(mcs, manifest, tmp_path / "build", ros2=False)
