@@ -20,6 +20,8 @@ COMMANDS = ("apply", "plan", "init", "discover", "msgs gen", "msgs list", "msgs 
 ONE_COMMAND = {
     "apply/init.py": "init",
     "interfaces/live/__init__.py": "discover",
+    "interfaces/live/_graph.py": "discover",  # rclpy missing: --rosbridge instead
+    "interfaces/live/_rosapi_details.py": "discover",  # no definition: --ros2 instead
     "interfaces/live/model.py": "discover",  # NameFilter.of: --select / --exclude
     "manifest/edit.py": "discover",  # --print
     "unity/setvalue.py": "scene attach",  # --set
