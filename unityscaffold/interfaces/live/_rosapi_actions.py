@@ -1,13 +1,17 @@
 """ROS 2 actions through rosbridge 2.x's rosapi.
 
-``/rosapi/action_servers`` names each action that has a server (its hidden ``_action/feedback``
-and ``_action/status`` topics are there); Unity is then its client. The type comes from
+``/rosapi/action_servers`` names each action whose hidden ``_action/feedback`` and
+``_action/status`` topics exist. An action client makes them too, so the list holds actions the
+robot only calls as well as ones it serves, and rosapi lists the endpoints of hidden topics
+nowhere: the role is left open (the manifest gets ``role: client`` with a TODO). The type comes from
 ``/rosapi/action_type`` where rosapi has it (added upstream after 2.1.0, rosbridge_suite
 pull request #1046). rosapi 2.1.0 lists hidden names nowhere, so there the action's
 ``_action/get_result`` service is called with an argument its request does not have:
-rosbridge looks the service's type up in the graph, fails to fill the request, and names the
-request type in its refusal (``Message type pkg/action/X_GetResult_Request does not have a
-field ...``). Nothing reaches the action server.
+rosbridge looks the service's type (``pkg/action/X_GetResult``) up in the graph and refuses,
+naming it: 2.1.0 because it loads service classes from ``pkg.srv`` only (``Unable to import srv
+class X_GetResult from package pkg``), a bridge that can load it because the request has no
+such field (``Message type pkg/action/X_GetResult_Request does not have a field ...``).
+Nothing reaches the action server.
 """
 
 from __future__ import annotations
@@ -20,22 +24,29 @@ from unityscaffold.interfaces.live.model import DiscoveredAction, NameFilter
 __all__ = ["rosapi_actions"]
 
 _PROBE_FIELD = "unityscaffold_type_probe"
-_REFUSAL = re.compile(
-    rf"Message type ([A-Za-z]\w*/action/[A-Za-z]\w*)_GetResult_Request does not have a field "
-    rf"{_PROBE_FIELD}"
+_REFUSALS = (
+    re.compile(
+        rf"Message type (?P<package>[A-Za-z]\w*)/action/(?P<name>[A-Za-z]\w*)_GetResult_Request "
+        rf"does not have a field {_PROBE_FIELD}"
+    ),
+    re.compile(
+        r"Unable to import srv class (?P<name>[A-Za-z]\w*)_GetResult from package "
+        r"(?P<package>[A-Za-z]\w*)\."
+    ),
 )
 
 
 def rosapi_actions(
-    client: RosbridgeClient, names: NameFilter
+    client: RosbridgeClient, names: NameFilter, *, has_action_type: bool
 ) -> tuple[list[DiscoveredAction], list[str]]:
-    """The actions rosapi lists servers of, each with its type, and what could not be typed."""
+    """The actions rosapi lists, each with its type, and what could not be typed;
+    ``has_action_type``: whether rosapi offers ``/rosapi/action_type``."""
     service = "/rosapi/action_servers"
     listed = client.try_call(service)
     if isinstance(listed, str):
         return [], [f"cannot list actions: {service} failed: {listed}"]
     actions, warnings = [], []
-    typed_by_rosapi = True
+    typed_by_rosapi = has_action_type
     for name in sorted(strings(client, listed, "action_servers", service)):
         if not names.accepts(name):
             continue
@@ -50,7 +61,7 @@ def rosapi_actions(
                 "actions by hand (ros2 action list -t shows the type)"
             )
             continue
-        actions.append(DiscoveredAction(name, kind, "client", ()))
+        actions.append(DiscoveredAction(name, kind, None, ()))
     return actions, warnings
 
 
@@ -66,5 +77,9 @@ def _action_type(client: RosbridgeClient, name: str) -> str | None:
 
 def _probed_type(client: RosbridgeClient, name: str) -> str | None:
     refusal = client.try_call(f"{name}/_action/get_result", {_PROBE_FIELD: 0})
-    match = _REFUSAL.search(refusal) if isinstance(refusal, str) else None
-    return match.group(1) if match else None
+    if not isinstance(refusal, str):
+        return None
+    for pattern in _REFUSALS:
+        if match := pattern.search(refusal):
+            return f"{match['package']}/action/{match['name']}"
+    return None

@@ -4,10 +4,14 @@ service type no local package defines (rosbridge never sends a ``.srv`` text).
 
 A rebuilt text has the fields only (no comments; rosapi gives constants without their types,
 so a type with constants is refused rather than guessed), and nothing reported by the bridge
-checks it, so a service type found locally is left to its file. These calls come last: rosapi
-2.1.0 on Jazzy fails on every message that has the ``_check_fields`` slot Jazzy's generated
-classes carry (rosbridge_suite issue #976), and a failing rosapi may not answer again, so after
-the first failure nothing more is asked and every remaining definition is a warning.
+checks it, so a service type found locally is left to its file.
+
+rosapi up to 2.1.0 ends when asked for these on ROS 2 Iron or newer (a ``KeyError:
+'check_fields'`` in its node, rosbridge_suite issue #976, fixed by pull request #1031), and
+with it every other rosapi service, the robot's users' included. So in ROS 2 they are asked only
+of a rosapi known to have the fix: one that offers ``/rosapi/action_type`` (pull request #1046,
+merged after #1031). These calls come last anyway, and after a first failure nothing more is
+asked: every remaining definition is a warning.
 """
 
 from __future__ import annotations
@@ -37,7 +41,13 @@ class Details:
     services: list[DiscoveredService]
     files: dict[str, str] = dataclasses.field(default_factory=dict)
     warnings: list[str] = dataclasses.field(default_factory=list)
-    broken: str | None = None  # why rosapi is asked no more
+    broken: str | None = None  # why rosapi is not asked (any more)
+
+
+_UNSAFE = (
+    "rosapi 2.1.0 and older end when asked for it on Jazzy (rosbridge_suite issue #976), and "
+    "this rosapi has no /rosapi/action_type, which the fixed ones have, so it was not asked"
+)
 
 
 def fill_details(
@@ -46,8 +56,11 @@ def fill_details(
     topics: list[DiscoveredTopic],
     services: list[DiscoveredService],
     known: Known,
+    *,
+    safe: bool,
 ) -> Details:
-    found = Details(list(topics), list(services))
+    """``safe``: whether asking cannot end rosapi (ROS 1, or a rosapi with the fix)."""
+    found = Details(list(topics), list(services), broken=None if safe else _UNSAFE)
     for index, topic in enumerate(found.topics):
         if topic.definition is None:
             text = _ask(
@@ -78,16 +91,12 @@ def _ask(found: Details, dialect: Dialect, name: str, kind: str, call: Callable[
         try:
             return call()
         except UserError as error:
-            found.broken = error.message
-            if dialect is Dialect.ROS2:
-                found.broken += (
-                    " (rosapi 2.1.0 on Jazzy fails on every type: rosbridge_suite issue #976)"
-                )
-            found.warnings.append(f"no definition of {kind} for {name}: {found.broken}")
+            found.broken = f"not asked, rosapi failed before ({error.message})"
+            found.warnings.append(f"no definition of {kind} for {name}: {error.message}")
             return None
     found.warnings.append(
-        f"no definition of {kind} for {name}: not asked, rosapi failed before ({found.broken}); "
-        "add the folder with its package to the manifest's interfaces"
+        f"no definition of {kind} for {name}: {found.broken}; add the folder with its package "
+        "to the manifest's interfaces"
         + (", or discover with --ros2" if dialect is Dialect.ROS2 else "")
     )
     return None

@@ -64,7 +64,8 @@ def discover_rosbridge(
         raw = _raw_topics(client)
         found_dialect = _dialect([t for _, t, _ in raw], dialect)
         chosen = [item for item in raw if names.accepts(item[0])]
-        service_names = [s for s in _service_names(client) if names.accepts(s)]
+        every_service = _service_names(client)
+        service_names = [s for s in every_service if names.accepts(s)]
         total = len(chosen) + len(service_names)
         topics, warnings = [], []
         ask = True  # stop asking which way topics flow once the bridge cannot say
@@ -85,13 +86,14 @@ def discover_rosbridge(
             if progress is not None:
                 progress(done, total, name)
         actions: list[DiscoveredAction] = []
+        newer = "/rosapi/action_type" in every_service  # a rosapi past 2.1.0 (_rosapi_details)
         if found_dialect is Dialect.ROS2:
-            actions, action_warnings = rosapi_actions(client, names)
+            actions, action_warnings = rosapi_actions(client, names, has_action_type=newer)
             warnings += action_warnings
         is_known = known(found_dialect) if known is not None else (lambda _: True)
-        details = fill_details(
-            client, found_dialect, topics, [s for s in services if s.type], is_known
-        )
+        typed = [s for s in services if s.type]
+        safe = found_dialect is Dialect.ROS1 or newer
+        details = fill_details(client, found_dialect, topics, typed, is_known, safe=safe)
     return Discovery(
         found_dialect,
         url,

@@ -1,7 +1,8 @@
 """A full definition text from a node's answer to Jazzy's ``~/get_type_description``.
 
 A node sends each type's ``.msg`` file as it was built (``encoding: msg``) when its type
-support embeds the sources, which Jazzy's generators do. A type without a source (``implicit``:
+support embeds the sources, which Jazzy's generators do, less the file's final newline, which
+is put back. A type without a source (``implicit``:
 an action's parts, or a node built without sources) is written back from its field
 descriptions: names and types only, which is all the RIHS01 hash covers, so the hash check
 still proves the text right; constants and default values are not in the description and are
@@ -66,7 +67,7 @@ def _own_text(type_name: str, reply: TypeReply) -> tuple[str, bool]:
     """``type_name``'s text, and whether it was rebuilt from fields (losing constants)."""
     encoding, text = reply.sources.get(type_name, ("implicit", ""))
     if encoding == "msg" and text:
-        return text, False
+        return text if text.endswith("\n") else text + "\n", False
     fields = reply.fields.get(type_name)
     if fields is None:
         raise ValueError(f"the answer describes no type {type_name}")
