@@ -13,6 +13,7 @@ from helpers import SYSTEM_PYTHON, require
 
 from tests.runtime.bridge import Bridge, start_bridge, vendor_folder
 from tests.runtime.client import build_client, build_ros2_client
+from tests.runtime.ros2 import Ros2, Rosbridge2, open_ros2, start_rosbridge2
 from tests.runtime.runtime_helpers import (
     SAMPLE_INTERFACES,
     TIME_PRIMITIVES,
@@ -117,3 +118,24 @@ def ours_only_client(
     return build_ours_only_client(
         mcs, rossharp_package, registry, [*roots, *service_types(registry)], out
     )
+
+
+@pytest.fixture(scope="session")
+def ros2(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Ros2]:
+    """ROS 2 Jazzy (scripts/ros2_stack.py, built if this machine has none) in a ROS domain of
+    this session's own, on loopback."""
+    stack = open_ros2(tmp_path_factory.mktemp("ros2"))
+    try:
+        yield stack
+    finally:
+        stack.close()
+
+
+@pytest.fixture(scope="session")
+def rosbridge2(ros2: Ros2) -> Iterator[Rosbridge2]:
+    """rosbridge 2.x's websocket server and rosapi in the session's domain, with their defaults."""
+    running = start_rosbridge2(ros2)
+    try:
+        yield running
+    finally:
+        running.close()

@@ -23,6 +23,8 @@ from unityscaffold.interfaces.registry import Registry
 REPO = Path(__file__).resolve().parents[2]
 DATA = Path(__file__).parent / "data"
 SAMPLE_INTERFACES = REPO / "sample_project" / "ros_ws" / "src"
+# Its ROS 2 counterpart (scripts/ros2_stack.py builds it into the ROS 2 stack).
+SAMPLE_ROS2_INTERFACES = REPO / "sample_project" / "ros2_ws" / "src"
 # ROS# maps these two to its hand-written time primitives: a known defect (test_wire_defects.py).
 TIME_PRIMITIVES = ("std_msgs/Time", "std_msgs/Duration")
 

@@ -1,0 +1,58 @@
+"""The real ROS 2 the runtime tests run on (scripts/ros2_stack.py, tests/runtime/ros2.py): an
+rclpy node's topic and service reach a plain JSON websocket client through rosbridge 2.x, and
+rosapi lists them with their ROS 2 types."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from websockets.sync.client import connect
+
+from tests.runtime.ros2 import Ros2, Rosbridge2
+
+DATA = Path(__file__).parent / "data" / "ros2"
+TIMEOUT = 60  # a guard against a hang only
+
+
+def test_an_rclpy_topic_and_service_reach_a_websocket_client_through_rosbridge_2(
+    ros2: Ros2, rosbridge2: Rosbridge2
+) -> None:
+    node = ros2.run_node(DATA / "talker_node.py", "/stack/chatter", "/stack/set")
+    try:
+        assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
+        with connect(rosbridge2.url, open_timeout=10) as socket:
+            socket.send(
+                json.dumps(
+                    {"op": "subscribe", "topic": "/stack/chatter", "type": "std_msgs/msg/String"}
+                )
+            )
+            message = json.loads(socket.recv(timeout=TIMEOUT))
+            socket.send(
+                json.dumps(
+                    {
+                        "op": "call_service",
+                        "service": "/stack/set",
+                        "args": {"data": True},
+                        "id": "c1",
+                    }
+                )
+            )
+            while (answer := json.loads(socket.recv(timeout=TIMEOUT)))["op"] == "publish":
+                pass
+        topics = rosbridge2.call("/rosapi/topics")["values"]
+        service_type = rosbridge2.call("/rosapi/service_type", {"service": "/stack/set"})
+    finally:
+        output = node.finish()
+    assert message["op"] == "publish" and message["topic"] == "/stack/chatter", message
+    assert message["msg"]["data"].startswith("hello "), message
+    assert answer == {
+        "op": "service_response",
+        "service": "/stack/set",
+        "values": {"success": True, "message": "set True"},
+        "result": True,
+        "id": "c1",
+    }, output
+    types = dict(zip(topics["topics"], topics["types"], strict=True))
+    assert types["/stack/chatter"] == "std_msgs/msg/String"
+    assert service_type["values"] == {"type": "std_srvs/srv/SetBool"}
