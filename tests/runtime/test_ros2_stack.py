@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from processes import wait_for
 from websockets.sync.client import connect
 
 from tests.runtime.ros2 import Ros2, Rosbridge2
@@ -15,12 +16,20 @@ DATA = Path(__file__).parent / "data" / "ros2"
 TIMEOUT = 60  # a guard against a hang only
 
 
+def _listed(bridge: Rosbridge2) -> bool:
+    services = bridge.call("/rosapi/services")["values"]["services"]
+    topics = bridge.call("/rosapi/topics")["values"]["topics"]
+    return "/stack/set" in services and "/stack/chatter" in topics
+
+
 def test_an_rclpy_topic_and_service_reach_a_websocket_client_through_rosbridge_2(
     ros2: Ros2, rosbridge2: Rosbridge2
 ) -> None:
     node = ros2.run_node(DATA / "talker_node.py", "/stack/chatter", "/stack/set")
     try:
         assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
+        # The node exists; rosbridge's own node may not have discovered it yet.
+        wait_for("the talker in rosapi", lambda: _listed(rosbridge2), TIMEOUT, rosbridge2.logs)
         with connect(rosbridge2.url, open_timeout=10) as socket:
             socket.send(
                 json.dumps(
