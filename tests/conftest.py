@@ -35,6 +35,15 @@ def mcs() -> str:
 
 
 @pytest.fixture(scope="session")
+def mono() -> str:
+    path = shutil.which("mono")
+    require(path, "Mono's runtime (Debian package mono-runtime)")
+    require(Path("/usr/lib/mono/4.5/Facades/netstandard.dll").exists(), "Debian's mono-devel")
+    assert path
+    return path
+
+
+@pytest.fixture(scope="session")
 def ros1_share() -> Path:
     require(
         (ROS1_SHARE / "std_msgs" / "msg").is_dir() and (ROS1_SHARE / "std_srvs" / "srv").is_dir(),

@@ -3,7 +3,6 @@ compiled once per session, and the sample's interface package as Python modules 
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 from collections.abc import Iterator
 from pathlib import Path
@@ -39,15 +38,6 @@ def rossharp_package() -> Path:
     require(folder, "ROS# 2.2.1's com.siemens.ros-sharp folder (UNITYSCAFFOLD_ROSSHARP)")
     assert folder
     return folder
-
-
-@pytest.fixture(scope="session")
-def mono() -> str:
-    path = shutil.which("mono")
-    require(path, "Mono's runtime (Debian package mono-runtime)")
-    require(Path("/usr/lib/mono/4.5/Facades/netstandard.dll").exists(), "Debian's mono-devel")
-    assert path
-    return path
 
 
 @pytest.fixture(scope="session")
