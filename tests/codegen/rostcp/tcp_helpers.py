@@ -67,3 +67,17 @@ def compile_generated(
 ) -> Compiled:
     """Generated classes (and any test program) against the runtime, warnings as errors."""
     return compile_cs(mcs, list(sources), out, ros2=ros2, references=references)
+
+
+def ros2_python() -> Path:
+    """The Python of the ROS 2 Jazzy stack's venv (rclpy and every interface package it
+    carries), built by ``scripts/ros2_stack.py`` when this machine has none."""
+    from tests.runtime.ros2 import stack_module
+
+    module = stack_module()
+    try:
+        root = module.ensure()
+    except module.StackError as error:
+        require(False, f"ROS 2 Jazzy ({error})")
+    python: Path = module.venv_python(root)
+    return python

@@ -83,13 +83,15 @@ def run_checker(mono: str, exe: Path, cases: Iterable[Case], work: Path) -> list
 
 
 def excused(
-    verdict: Verdict, spec: MessageSpec, registry: Registry, warnings: dict[str, str]
+    verdict: Verdict, spec: MessageSpec, registry: Registry, code: GeneratedCode
 ) -> bool:
     """Whether a failure is one a shipped class's warning announced: any case of a type that
     holds a class garbled on the wire; only the default instance where a shipped class
     merely starts with other values."""
+    warnings = {s.cs_class.full_name: s.warning for s in code.skipped if s.warning}
     held = {m.full_name for m in registry.closure([spec])} | {spec.full_name}
-    found = [warnings[name] for name in held if name in warnings]
+    classes = {code.message_class(name).full_name for name in held}
+    found = [warnings[name] for name in classes if name in warnings]
     if any("starts with" not in w for w in found):
         return True
     problem = verdict.problem or ""

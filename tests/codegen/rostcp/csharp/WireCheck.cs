@@ -142,6 +142,8 @@ public static class WireCheck
             return BitConverter.ToSingle(BitConverter.GetBytes(uint.Parse((string)value, NumberStyles.HexNumber)), 0);
         if (type == typeof(double))
             return BitConverter.Int64BitsToDouble(unchecked((long)ulong.Parse((string)value, NumberStyles.HexNumber)));
+        if (type == typeof(sbyte)) // the connector's sbyte for ROS 2's octet, 0..255 in rclpy
+            return unchecked((sbyte)long.Parse((string)value, CultureInfo.InvariantCulture));
         if (type.IsPrimitive)
             return Convert.ChangeType((string)value, type, CultureInfo.InvariantCulture);
         object message = Activator.CreateInstance(type);
