@@ -82,9 +82,7 @@ def run_checker(mono: str, exe: Path, cases: Iterable[Case], work: Path) -> list
     return verdicts
 
 
-def excused(
-    verdict: Verdict, spec: MessageSpec, registry: Registry, code: GeneratedCode
-) -> bool:
+def excused(verdict: Verdict, spec: MessageSpec, registry: Registry, code: GeneratedCode) -> bool:
     """Whether a failure is one a shipped class's warning announced: any case of a type that
     holds a class garbled on the wire; only the default instance where a shipped class
     merely starts with other values."""
