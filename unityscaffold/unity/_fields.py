@@ -12,7 +12,7 @@ from typing import cast
 
 import yaml
 
-from unityscaffold.unity._scalars import keep_fold_spaces
+from unityscaffold.unity._folds import read_folds_unity_way
 from unityscaffold.unity._split import Doc
 
 __all__ = [
@@ -98,8 +98,7 @@ def parse_field(doc: Doc, key: str) -> object:
     text = field_text(doc, key)
     if text is None:
         return None
-    if text.startswith(f'  {key}: "') and text.count("\n") > 1:
-        text = keep_fold_spaces(text)  # a double-quoted string Unity folded: read it its way
+    text = read_folds_unity_way(text)  # double-quoted strings Unity folded, read its way
     loaded = yaml.load(text, Loader=_BaseLoader)
     return loaded[key] if isinstance(loaded, dict) else None
 

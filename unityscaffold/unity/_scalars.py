@@ -8,8 +8,9 @@ reader.
 from __future__ import annotations
 
 import math
-import re
 import struct
+
+from unityscaffold.unity._folds import FOLD_WIDTH, fold_double_quoted, keep_fold_spaces
 
 __all__ = [
     "FOLD_WIDTH",
@@ -20,8 +21,6 @@ __all__ = [
     "to_float32",
 ]
 
-#: Unity folds plain and single-quoted strings once a line passes this column (as PyYAML does).
-FOLD_WIDTH = 80
 
 #: Decimal exponents written in plain notation. −9 and the switch to e-notation below it are
 #: observed; above, 3 is observed plain and 11 in e-notation, 9 is our choice in between.
@@ -92,27 +91,6 @@ def _plain_notation(digits: str, exponent: int) -> str:
     return digits[:whole] + "." + digits[whole:]
 
 
-_FOLD_RE = re.compile(r"(\\*)( +)\n")
-_ESCAPED_SPACE = "\\x20"
-
-
-def keep_fold_spaces(text: str) -> str:
-    """A double-quoted scalar Unity folded over lines, made to read as Unity reads it.
-
-    Unity folds a long double-quoted string at a space and keeps the spaces before the fold:
-    ``"a\\n   ⏎    b"`` is ``a``, a newline and four spaces, then ``b``. YAML drops trailing
-    spaces before a line break, leaving one; written as ``\\x20`` escapes they are kept.
-    """
-
-    def escape(match: re.Match[str]) -> str:
-        slashes, spaces = match.group(1), match.group(2)
-        if len(slashes) % 2:  # the first space is already the escape "\\ "
-            return slashes + " " + _ESCAPED_SPACE * (len(spaces) - 1) + "\n"
-        return slashes + _ESCAPED_SPACE * len(spaces) + "\n"
-
-    return _FOLD_RE.sub(escape, text)
-
-
 def _needs_double_quotes(text: str) -> bool:
     # Unity decodes UTF-8 only inside double quotes, so anything outside printable ASCII
     # (and CR, which a single-quoted scalar cannot keep) goes there as an escape.
@@ -140,18 +118,19 @@ def format_string(
     Plain when YAML allows it, single-quoted for indicators and line breaks (``'`` doubled, each
     ``\\n`` written as an empty line), double-quoted with ``\\u`` escapes for anything outside
     printable ASCII. Plain and single-quoted text folds at a single space past column 80, with
-    continuation lines indented by ``indent``. Files from 6000.x single-quote a trailing ``]``.
+    continuation lines indented by ``indent``; double-quoted text folds as Unity folds it
+    (``_folds``). Files from 6000.x single-quote a trailing ``]``.
     """
     if text == "":
         return ""
     if _needs_double_quotes(text):
-        return _double_quoted(text)
+        return fold_double_quoted(_escaped(text), column, indent)
     if _plain_allowed(text, quote_trailing_bracket):
         return _folded(text, column, indent, quoted=False)
     return _folded(text, column, indent, quoted=True)
 
 
-def _double_quoted(text: str) -> str:
+def _escaped(text: str) -> str:
     out = []
     for ch in text:
         if ch in _NAMED_ESCAPES:
@@ -164,7 +143,7 @@ def _double_quoted(text: str) -> str:
             out.append(f"\\u{ord(ch):04X}")
         else:
             out.append(f"\\U{ord(ch):08X}")
-    return '"' + "".join(out) + '"'
+    return "".join(out)
 
 
 def _folded(text: str, column: int, indent: int, *, quoted: bool) -> str:
