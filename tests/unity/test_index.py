@@ -128,3 +128,26 @@ def test_the_serialization_era_is_detected_per_file(
 def test_names_in_double_quotes_are_decoded(tmp_path: Path) -> None:
     text = _load("DemoScene.unity").text().replace("m_Name: Demo", 'm_Name: "\\u0414emo"')
     assert SceneDocument.parse(text, "q.unity").find_gameobject("\u0414emo").name == "\u0414emo"
+
+
+# A prefab instance renamed in Unity to a long name that needs double quotes (a non-ASCII
+# letter): Unity folds it over lines in the modification's value, keeping spaces before a fold.
+LONG_NAME = "Basic Drawing Manager \u00e9 for the left arm, the right arm and the head  camera"
+
+
+@pytest.mark.parametrize(
+    "value",
+    [
+        '"Basic Drawing Manager \\u00E9 for the left arm, the right arm and the head \n'
+        '        camera"',
+        "Basic Drawing Manager for the left arm, the right arm, the head and the\n"
+        "        tail camera",
+    ],
+)
+def test_a_prefab_instance_named_over_several_lines_is_found_by_its_name(value: str) -> None:
+    text = (DATA / "ros-tcp-connector" / "EmptyVisualizationSuite.prefab").read_text()
+    text = text.replace("      value: BasicDrawingManager\n", f"      value: {value}\n")
+    scene = SceneDocument.parse(text)
+    name = LONG_NAME if value.startswith('"') else " ".join(value.split())
+    node = scene.find_gameobject(f"BlankVisualizationSuite/{name}")
+    assert node.is_prefab_instance

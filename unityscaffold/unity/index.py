@@ -15,12 +15,14 @@ import yaml
 
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
+from unityscaffold.unity._folds import read_folds_unity_way
 from unityscaffold.unity._split import Doc
 from unityscaffold.unity.values import ScriptRef
 
 __all__ = ["GameObject", "Hierarchy", "Node", "SceneComponent", "build_hierarchy"]
 
-_PI_NAME_RE = re.compile(r"propertyPath: m_Name\n\s+value: (.*)")
+# The value may go on over deeper-indented lines: a long name Unity folded.
+_PI_NAME_RE = re.compile(r"propertyPath: m_Name\n( +)value: (.*(?:\n\1  .*)*)")
 _PI_ROOT_ORDER_RE = re.compile(r"propertyPath: m_RootOrder\n\s+value: (-?\d+)")
 _PI_PARENT_RE = re.compile(r"^    m_TransformParent: \{fileID: (-?\d+)\}", re.M)
 
@@ -150,7 +152,7 @@ def _gameobject_node(doc: Doc, by_id: Mapping[int, Doc]) -> Node:
 
 def _prefab_node(doc: Doc, position: int) -> Node:
     match = _PI_NAME_RE.search(doc.text)
-    name = _unquote(match.group(1)) if match else f"PrefabInstance &{doc.file_id}"
+    name = _value_text(match.group(2)) if match else f"PrefabInstance &{doc.file_id}"
     parent = _PI_PARENT_RE.search(doc.text)
     order = _PI_ROOT_ORDER_RE.search(doc.text)
     node = Node(doc.file_id, name, None, doc.file_id)
@@ -159,11 +161,16 @@ def _prefab_node(doc: Doc, position: int) -> Node:
     return node
 
 
-def _unquote(raw: str) -> str:
-    if raw.startswith(("'", '"')):
-        loaded = yaml.safe_load(raw)
-        return loaded if isinstance(loaded, str) else raw
-    return raw
+def _value_text(raw: str) -> str:
+    """A modification's string value, unquoted and unfolded as Unity reads it."""
+    if "\n" not in raw and not raw.startswith(("'", '"')):
+        return raw
+    try:
+        loaded = yaml.load(read_folds_unity_way(f"value: {raw}\n"), Loader=yaml.BaseLoader)
+    except yaml.YAMLError:
+        return raw
+    value = loaded.get("value") if isinstance(loaded, dict) else None
+    return value if isinstance(value, str) else raw
 
 
 def _link(
