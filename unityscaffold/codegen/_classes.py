@@ -107,7 +107,7 @@ def _units(registry: Registry, roots: list[Interface], extra: tuple[str, ...]) -
                 where = SourceLocation(message.source or message.full_name)
                 raise LocatedError.at(
                     where,
-                    f"{message.full_name} is used as a field type, but ROS# has no class for it",
+                    f"{message.full_name} is used as a field type, but it has no class of its own",
                     hint="use the service's or "
                     "action's own request, response, goal, result or feedback",
                 )
