@@ -183,6 +183,28 @@ def test_debian_ros1_definitions_match_the_shipped_classes_but_quaternions_defau
     interfaces, problems = registry.parse_all()
     assert not problems
     code = generate(registry, interfaces, Options(Dialect.ROS1))
-    warnings = {s.ros_type: s.warning for s in code.skipped if s.warning}
-    assert list(warnings) == ["geometry_msgs/Quaternion"]
+    warnings = {s.ros_type: s.warning or "" for s in code.skipped if s.warning}
+    differing = [name for name, text in warnings.items() if "never registers" not in text]
+    assert differing == ["geometry_msgs/Quaternion"]
     assert "starts with w = 1" in warnings["geometry_msgs/Quaternion"]
+
+
+def test_shipped_action_wrappers_that_never_register_are_warned_about(ros1_share: Path) -> None:
+    code = _generate(Dialect.ROS1, ["nav_msgs/action/GetMap"])
+    assert not [f for f in code.files if "/action/" in f.path]
+    warned = {s.cs_class.name: s.warning for s in code.skipped if s.warning}
+    for name in ("GetMapActionGoal", "GetMapActionResult", "GetMapActionFeedback", "GetMapAction"):
+        assert "never registers itself" in warned[name]
+    assert "GetMapGoal" not in warned  # the parts register (under the action's name)
+
+
+def test_a_root_namespace_of_ones_own_holds_the_generated_classes_only(ros1_share: Path) -> None:
+    registry = Registry.load(Dialect.ROS1, [DATA / "ros1"])
+    roots = [registry.get("scaffold_test_msgs/Kitchen")]
+    code = generate(registry, roots, Options(Dialect.ROS1, namespace="MyRobot.Msgs"))
+    kitchen = code.message_class("scaffold_test_msgs/Kitchen")
+    assert kitchen == CsClass("MyRobot.Msgs.ScaffoldTest", "KitchenMsg")
+    assert code.message_class("std_msgs/Header") == CsClass("RosMessageTypes.Std", "HeaderMsg")
+    text = next(f.text for f in code.files if f.path == "ScaffoldTest/msg/KitchenMsg.cs")
+    assert "namespace MyRobot.Msgs.ScaffoldTest" in text
+    assert "public global::RosMessageTypes.Std.HeaderMsg header;" in text

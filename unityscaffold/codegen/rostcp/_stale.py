@@ -76,4 +76,20 @@ def stale_warnings(items: list[TcpClass], dialect: Dialect, ids: Identities) -> 
                 f"does not match its definition here: messages of {item.spec.full_name} are "
                 f"garbled between Unity and ROS; {_WHAT_TO_DO}"
             )
+    warnings.update(_unregistered(items))
     return warnings
+
+
+def _unregistered(items: list[TcpClass]) -> dict[str, str]:
+    """The connector's shipped action wrappers (``nav_msgs/GetMapActionGoal`` …) have no
+    ``Register``: ROSConnection finds neither their ROS name nor their decoder."""
+    return {
+        item.cs_class.full_name: (
+            f"ROS-TCP-Connector's {item.cs_class.full_name} never registers itself (it has no "
+            "Register()), so ROSConnection cannot subscribe to it or decode it: a ROS 1 action "
+            f"client or server of {item.interface.full_name} receives nothing; send only, or "
+            "use an action of your own package (its generated classes register)"
+        )
+        for item in items
+        if item.shipped is not None and item.shipped.subtopic == "-"
+    }
