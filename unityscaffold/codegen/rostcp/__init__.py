@@ -9,8 +9,9 @@ takes what the ROS# generator (``unityscaffold.codegen.generate``) takes and ret
 ``GeneratedCode``: ``files`` (paths relative to the output folder, such as
 ``Geometry/msg/PoseMsg.cs``), ``skipped`` (the classes the connector ships and the generated code
 references instead, each with a ``warning`` when the shipped class does not match the distro's
-definition, or never registers itself: the connector's ROS 1 action wrappers), and ``classes`` (ROS type -> C# class per ``ClassRole``, for the scripts). So
-``codegen.layout.output_files`` places the files and their ``.meta`` files as for ROS#.
+definition, or never registers itself: the connector's ROS 1 action wrappers), and ``classes``
+(ROS type -> C# class per ``ClassRole``, for the scripts). So ``codegen.layout.output_files``
+places the files and their ``.meta`` files as for ROS#.
 
 Classes have the connector's public shape and names: ``RosMessageTypes.<Pkg>.<Name>Msg`` with
 public fields, ``k_RosMessageName`` (``pkg/Name`` in both ROS versions), ``Deserialize``,
