@@ -163,6 +163,7 @@ def test_docs_describe_every_key_in_its_section() -> None:
         "action": "## `actions`",
         "component": "## `components`",
         "object": "## `objects`",
+        "robot": "## `robots`",
     }
     # Mappings inside an object's row are described in prose there, each key in backticks.
     inline = {"ui": "## `objects`", "builtinComponent": "## `objects`"}

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._facts import NewFields, ScriptFacts
 from unityscaffold.apply._resolve import Candidate, ProjectClasses, named_candidates
+from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.apply._rossharp import PACKAGE, RosSharp
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import Component, Manifest
@@ -30,6 +31,7 @@ class SceneContext:
     rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
     known: ScriptFacts
     follow_renames: bool = False
+    robots: tuple[PlannedRobot, ...] = ()
     classes: ProjectClasses = field(init=False)
 
     def __post_init__(self) -> None:

@@ -31,6 +31,8 @@ from unityscaffold.apply._objects import (
 from unityscaffold.apply._order import order_objects
 from unityscaffold.apply._references import typed_reference
 from unityscaffold.apply._renames import follow
+from unityscaffold.apply._robot_plan import PlannedRobot
+from unityscaffold.apply._robots import place_robots
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
 from unityscaffold.manifest.model import (
@@ -43,6 +45,7 @@ from unityscaffold.manifest.model import (
     Service,
     Topic,
 )
+from unityscaffold.manifest.robot_entry import RobotEntry
 from unityscaffold.unity import (
     SceneDocument,
 )
@@ -73,6 +76,7 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
             ref = scripts[id(c)]
             slot = (editor.path(c.gameobject), ref.guid, ref.file_id)
             editor.keys.setdefault(slot, []).append(c.key)
+    place_robots(ctx, editor, ctx.robots)
     objects = _declare_objects(ctx, editor)
     needs_connector = [
         c
@@ -141,13 +145,15 @@ def _load(manifest: Manifest, relative: str, where: SourceLocation) -> SceneDocu
 def _scene_locations(manifest: Manifest) -> dict[str, SourceLocation]:
     """Where each scene is named: the item's own ``scene`` key, else the top-level one."""
     found: dict[str, SourceLocation] = {}
-    items: tuple[Connector | Topic | Service | Action | Component | SceneObject, ...] = (
+    items: tuple[Connector | Topic | Service | Action | Component | SceneObject | RobotEntry, ...]
+    items = (
         manifest.connector,
         *manifest.topics,
         *manifest.services,
         *manifest.actions,
         *manifest.components,
         *manifest.objects,
+        *manifest.robots,
     )
     for item in items:
         own = item.locations.has("scene")
@@ -165,12 +171,13 @@ def plan_scenes(
     lock: LockFile,
     *,
     follow_renames: bool = False,
+    robots: tuple[PlannedRobot, ...] = (),
 ) -> list[ScenePlan]:
     """Every scene the manifest or the lock mentions, edited in memory."""
     names = rossharp.class_names()
     generated = frozenset(s.view.class_name for s in code.scripts)
     known = ScriptFacts(manifest.project_root, rossharp, scripts, names, generated)
-    ctx = SceneContext(manifest, code, rossharp, scripts, names, known, follow_renames)
+    ctx = SceneContext(manifest, code, rossharp, scripts, names, known, follow_renames, robots)
     named = _scene_locations(manifest)
     locations = dict(named)
     for old in lock.components:

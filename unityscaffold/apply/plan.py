@@ -24,6 +24,7 @@ from unityscaffold.apply._lock import (
 )
 from unityscaffold.apply._moves import find_moves
 from unityscaffold.apply._prune import plan_pruning
+from unityscaffold.apply._robot_plan import plan_robots
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
 from unityscaffold.apply._scriptmetas import plan_script_metas
@@ -146,14 +147,18 @@ def make_plan(
     moves = find_moves(manifest, lock)
     code: CodePlan = plan_code(manifest, registry, salt, scripts, moves)
     rossharp = RosSharp.of(project, scripts)
-    scenes = plan_scenes(manifest, code, rossharp, scripts, lock, follow_renames=follow_renames)
+    robots = tuple(plan_robots(manifest, salt))
+    scenes = plan_scenes(
+        manifest, code, rossharp, scripts, lock, follow_renames=follow_renames, robots=robots
+    )
 
-    generated = list(code.generated)
+    generated = list(code.generated) + [f for r in robots for f in r.files]
     check_name_lengths(d.path for d in (*generated, *code.created_once))
     conflicts = [] if force else _conflicts(manifest, generated, lock)
     user = plan_user_files(manifest, code, lock, moves)
     user_paths = {d.path for d in user.desired}
     desired = generated + [d for d in code.created_once if d.path not in user_paths]
+    desired += [meta for r in robots for meta in r.metas]
     desired += user.desired + metas.desired + _settings_change(manifest)
     desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
 

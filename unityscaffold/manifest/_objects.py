@@ -12,7 +12,7 @@ from unityscaffold.manifest._read import Reader, one_of, suggest
 from unityscaffold.manifest._yaml import YMap, YNode, YScalar, YSeq
 from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
 
-__all__ = ["read_object"]
+__all__ = ["read_object", "read_vector"]
 
 EXPECT_PATH = "a hierarchy path such as Robot/base_link"
 
@@ -28,9 +28,9 @@ def read_object(r: Reader, node: YNode, ctx: Context) -> SceneObject | None:
     item = SceneObject(
         path=path or "",
         scene=read_scene(r, m, ctx, "object") or "",
-        position=_vector(r, m, "position", 3),  # type: ignore[arg-type]
-        rotation=_vector(r, m, "rotation", 3),  # type: ignore[arg-type]
-        scale=_vector(r, m, "scale", 3),  # type: ignore[arg-type]
+        position=read_vector(r, m, "position", 3),  # type: ignore[arg-type]
+        rotation=read_vector(r, m, "rotation", 3),  # type: ignore[arg-type]
+        scale=read_vector(r, m, "scale", 3),  # type: ignore[arg-type]
         active=r.boolean(m, "active"),
         tag=r.text(m, "tag", "a tag such as MainCamera"),
         layer=_layer(r, m),
@@ -92,7 +92,7 @@ def _sibling_index(r: Reader, m: YMap) -> int | None:
     return None
 
 
-def _vector(r: Reader, m: YMap, key: str, size: int) -> tuple[float, ...] | None:
+def read_vector(r: Reader, m: YMap, key: str, size: int) -> tuple[float, ...] | None:
     entry = m.get(key)
     if entry is None:
         return None
@@ -150,7 +150,7 @@ def _ui(r: Reader, m: YMap) -> RectLayout | None:
     if u is None:
         return None
     keys = ("anchor_min", "anchor_max", "position", "size", "pivot")
-    return RectLayout(*(_vector(r, u, key, 2) for key in keys))  # type: ignore[arg-type]
+    return RectLayout(*(read_vector(r, u, key, 2) for key in keys))  # type: ignore[arg-type]
 
 
 def _builtin(r: Reader, node: YNode) -> BuiltinComponent | None:

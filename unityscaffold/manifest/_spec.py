@@ -52,6 +52,7 @@ from unityscaffold.manifest._keys import (
     scene_key,
 )
 from unityscaffold.manifest._spec_objects import BUILTIN, OBJECT, UI
+from unityscaffold.manifest._spec_robots import ROBOT
 from unityscaffold.manifest.model import (
     MANIFEST_VERSION,
     Direction,
@@ -84,6 +85,7 @@ __all__ = [
     "NOT_RELATIVE",
     "NO_DEFAULT",
     "OBJECT",
+    "ROBOT",
     "ROS2_ACTION_PART",
     "ROS2_NAME_NOT",
     "ROS_NAME",
@@ -182,6 +184,11 @@ TOP = Section(
             "GameObjects to create and keep as declared: transform, active flag, tag, layer, "
             "UI layout and built-in components (Camera, Light, colliders, Canvas, …).",
             list_of(ref("object")),
+        ),
+        Key(
+            "robots",
+            "Robots imported from their URDF into a scene, as ROS#'s importer does it.",
+            list_of(ref("robot")),
         ),
     ),
     rules=(
@@ -441,4 +448,5 @@ SECTIONS: tuple[Section, ...] = (
     OBJECT,
     UI,
     BUILTIN,
+    ROBOT,
 )

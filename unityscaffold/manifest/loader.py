@@ -23,6 +23,7 @@ from unityscaffold.manifest._entries import (
 from unityscaffold.manifest._objects import read_object
 from unityscaffold.manifest._paths import folder_path, project_path
 from unityscaffold.manifest._read import Reader
+from unityscaffold.manifest._robots import read_robot
 from unityscaffold.manifest._yaml import YEntry, YMap, YScalar, compose
 from unityscaffold.manifest.model import (
     MANIFEST_VERSION,
@@ -117,6 +118,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     actions = [read_action(r, n, ctx) for n in r.items(top, "actions")]
     components = [read_component(r, n, ctx) for n in r.items(top, "components")]
     objects = [read_object(r, n, ctx) for n in r.items(top, "objects")]
+    robots = [read_robot(r, n, ctx, path.parent) for n in r.items(top, "robots")]
     good_topics = tuple(t for t in topics if t is not None)
     good_services = tuple(s for s in services if s is not None)
     good_actions = tuple(a for a in actions if a is not None)
@@ -146,6 +148,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         locations=locations(top),
         objects=good_objects,
         actions=good_actions,
+        robots=tuple(robot for robot in robots if robot is not None),
     )
 
 

@@ -15,6 +15,8 @@ from pathlib import Path
 
 from unityscaffold.errors import SourceLocation
 from unityscaffold.interfaces.model import Dialect
+from unityscaffold.manifest.locations import Locations
+from unityscaffold.manifest.robot_entry import RobotEntry
 
 __all__ = [
     "CSHARP_IDENTIFIER",
@@ -83,27 +85,6 @@ class Protocol(enum.IntEnum):
     def key(self) -> str:
         """The spelling used in the manifest (``websocket-sharp``, ``websocket-net``)."""
         return self.name.lower().replace("_", "-")
-
-
-@dataclass(frozen=True, slots=True)
-class Locations:
-    """Where an item and each of its keys' values were written.
-
-    ``of(key)`` falls back to the item itself for keys that were left to their default, so a
-    later error about a defaulted value still points somewhere useful.
-    """
-
-    item: SourceLocation
-    keys: tuple[tuple[str, SourceLocation], ...] = ()
-
-    def of(self, key: str) -> SourceLocation:
-        for name, location in self.keys:
-            if name == key:
-                return location
-        return self.item
-
-    def has(self, key: str) -> bool:
-        return any(name == key for name, _ in self.keys)
 
 
 @dataclass(frozen=True, slots=True)
@@ -345,6 +326,7 @@ class Manifest:
     locations: Locations
     objects: tuple[SceneObject, ...] = ()
     actions: tuple[Action, ...] = ()
+    robots: tuple[RobotEntry, ...] = ()
 
     @property
     def output(self) -> str:
@@ -371,6 +353,7 @@ class Manifest:
         named.update(a.scene for a in self.actions)
         named.update(c.scene for c in self.components)
         named.update(o.scene for o in self.objects)
+        named.update(r.scene for r in self.robots)
         return tuple(sorted(named))
 
 

@@ -61,6 +61,15 @@ objects:
 #  - path: Robot/base_link/Screen
 #    primitive: plane
 #    components: [{type: MeshRenderer, fields: {m_Materials: [Default-Material]}}]
+
+# Robots imported from their URDF as ROS#'s importer does it (links, joints, colliders,
+# materials), kept as the URDF says; `objects` and `components` can then add to the links.
+robots:
+#  - urdf: ros/my_robot.urdf
+#    packages: {my_robot_description: ros/my_robot_description}
+#    position: [0, 0.5, 0]
+#    kinematic: true
+#    gravity: false
 """)
 
 

@@ -249,6 +249,102 @@ for _name, (_class_id, _fields) in MESH_LAYOUTS.items():
 #: The classes a manifest may declare, sorted.
 BUILTIN_TYPES = tuple(sorted(_LAYOUTS))
 
+_JOINT_TAIL = (
+    _Field("m_BreakForce", "float", "Infinity"),
+    _Field("m_BreakTorque", "float", "Infinity"),
+    _Field("m_EnableCollision", "bool", "0"),
+    _Field("m_EnablePreprocessing", "bool", "1"),
+    _Field("m_MassScale", "float", "1"),
+    _Field("m_ConnectedMassScale", "float", "1"),
+)
+_CONNECTED = (
+    _Field("m_ConnectedBody", "ref:Rigidbody", "{fileID: 0}"),
+    _Field("m_ConnectedArticulationBody", "asset", "{fileID: 0}"),
+)
+
+#: Classes the URDF import writes that a manifest cannot declare (yet): the same 2022.3
+#: layouts, read off the scene Unity saved after ROS#'s importer built r2d2.
+_IMPORTED_LAYOUTS: dict[str, tuple[int, tuple[_Field, ...]]] = {
+    "FixedJoint": (138, (*_CONNECTED, *_JOINT_TAIL)),
+    "HingeJoint": (
+        59,
+        (
+            *_CONNECTED,
+            _Field("m_Anchor", "Vector3", "{x: 0, y: 0, z: 0}"),
+            _Field("m_Axis", "Vector3", "{x: 1, y: 0, z: 0}"),
+            _Field("m_AutoConfigureConnectedAnchor", "bool", "1"),
+            _Field("m_ConnectedAnchor", "Vector3", "{x: 0, y: 0, z: 0}"),
+            _Field("serializedVersion", "fixed", "2"),
+            _Field("m_UseSpring", "bool", "0"),
+            _Field("m_Spring", "block", "\n    spring: 0\n    damper: 0\n    targetPosition: 0"),
+            _Field("m_UseMotor", "bool", "0"),
+            _Field("m_Motor", "block", "\n    targetVelocity: 0\n    force: 0\n    freeSpin: 0"),
+            _Field("m_UseLimits", "bool", "0"),
+            _Field("m_ExtendedLimits", "bool", "0"),
+            _Field("m_UseAcceleration", "bool", "0"),
+            _Field(
+                "m_Limits",
+                "block",
+                "\n    min: 0\n    max: 0\n    bounciness: 0\n    bounceMinVelocity: 0.2"
+                "\n    contactDistance: 0",
+            ),
+            *_JOINT_TAIL,
+        ),
+    ),
+    "MeshCollider": (
+        64,
+        _collider(
+            _Field("m_Convex", "bool", "0"),
+            _Field("m_CookingOptions", "int", "30"),
+            _Field("m_Mesh", "asset", "{fileID: 0}"),
+            version="5",
+        ),
+    ),
+    "MeshFilter": (33, (_Field("m_Mesh", "asset", "{fileID: 0}"),)),
+    "MeshRenderer": (
+        23,
+        (
+            _Field("m_Enabled", "bool", "1"),
+            _Field("m_CastShadows", "int", "1"),
+            _Field("m_ReceiveShadows", "bool", "1"),
+            _Field("m_DynamicOccludee", "bool", "1"),
+            _Field("m_StaticShadowCaster", "bool", "0"),
+            _Field("m_MotionVectors", "int", "1"),
+            _Field("m_LightProbeUsage", "int", "1"),
+            _Field("m_ReflectionProbeUsage", "int", "1"),
+            _Field("m_RayTracingMode", "int", "2"),
+            _Field("m_RayTraceProcedural", "bool", "0"),
+            _Field("m_RenderingLayerMask", "int", "1"),
+            _Field("m_RendererPriority", "int", "0"),
+            # what CreatePrimitive's renderer has: Unity's Default-Material
+            _Field(
+                "m_Materials",
+                "block",
+                "\n  - {fileID: 10303, guid: 0000000000000000f000000000000000, type: 0}",
+            ),
+            _Field("m_StaticBatchInfo", "block", "\n    firstSubMesh: 0\n    subMeshCount: 0"),
+            _Field("m_StaticBatchRoot", "asset", "{fileID: 0}"),
+            _Field("m_ProbeAnchor", "asset", "{fileID: 0}"),
+            _Field("m_LightProbeVolumeOverride", "asset", "{fileID: 0}"),
+            _Field("m_ScaleInLightmap", "float", "1"),
+            _Field("m_ReceiveGI", "int", "1"),
+            _Field("m_PreserveUVs", "bool", "1"),
+            _Field("m_IgnoreNormalsForChartDetection", "bool", "0"),
+            _Field("m_ImportantGI", "bool", "0"),
+            _Field("m_StitchLightmapSeams", "bool", "1"),
+            _Field("m_SelectedEditorRenderState", "int", "3"),
+            _Field("m_MinimumChartSize", "int", "4"),
+            _Field("m_AutoUVMaxDistance", "float", "0.5"),
+            _Field("m_AutoUVMaxAngle", "float", "89"),
+            _Field("m_LightmapParameters", "asset", "{fileID: 0}"),
+            _Field("m_SortingLayerID", "int", "0"),
+            _Field("m_SortingLayer", "int", "0"),
+            _Field("m_SortingOrder", "int", "0"),
+            _Field("m_AdditionalVertexStreams", "asset", "{fileID: 0}"),
+        ),
+    ),
+}
+
 
 @dataclass(frozen=True, slots=True)
 class BuiltinClass:
@@ -263,9 +359,10 @@ class BuiltinClass:
         return next((f.unity for f in self.fields if f.name == field), None)
 
 
-def builtin_class(name: str) -> BuiltinClass | None:
-    """The built-in class ``name`` (``Camera``), or None if the manifest cannot declare it."""
-    layout = _LAYOUTS.get(name)
+def builtin_class(name: str, *, imported: bool = False) -> BuiltinClass | None:
+    """The built-in class ``name`` (``Camera``), or None if the manifest cannot declare it;
+    with ``imported``, also the classes only the URDF import writes (``HingeJoint``)."""
+    layout = _LAYOUTS.get(name) or (_IMPORTED_LAYOUTS.get(name) if imported else None)
     if layout is None:
         return None
     class_id, fields = layout

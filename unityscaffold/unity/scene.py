@@ -15,7 +15,7 @@ from typing import cast
 
 from unityscaffold.errors import Diagnostic, LocatedError, UserError
 from unityscaffold.fileout import write_chunks_if_changed
-from unityscaffold.unity import _declared, _edits, _siblings
+from unityscaffold.unity import _declared, _edits, _owned, _siblings
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._eras import SerializationEra
@@ -26,6 +26,7 @@ from unityscaffold.unity._split import Doc, split_text
 from unityscaffold.unity._validate import check_docs
 from unityscaffold.unity.builtins import BuiltinClass
 from unityscaffold.unity.index import GameObject, Hierarchy, SceneComponent
+from unityscaffold.unity.owned import OwnedDocument, OwnedObject
 from unityscaffold.unity.textdiff import diff
 from unityscaffold.unity.values import MONOSCRIPT_FILE_ID, FieldValue, ScriptRef, Verbatim
 
@@ -316,6 +317,13 @@ class SceneDocument:
         items = _field_list(fields)
         file_id = _declared.ensure_builtin(self._docs, self._go(go), builtin, key, items)
         return self.component(file_id)
+
+    def sync_owned(
+        self, objects: Sequence[OwnedObject], documents: Sequence[OwnedDocument] = ()
+    ) -> list[str]:
+        """Create or keep as declared objects known by their fileIDs (see ``unity.owned``);
+        one line per object created or changed."""
+        return _owned.sync_owned(self._docs, objects, documents)
 
     def place_siblings(self, parent: GameObject | None, wanted: Mapping[int, int]) -> bool:
         """Put GameObjects (fileID -> sibling index, 0 first) at their places among

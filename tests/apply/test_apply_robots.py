@@ -1,0 +1,210 @@
+"""The manifest's `robots`: a URDF put into a scene as ROS#'s importer builds it, idempotent,
+updated in place when the URDF changes, keeping what the user added, and refusing what is not
+written yet at its element (comparison with Unity's own r2d2: test_apply_robots_r2d2.py)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from helpers import build_tree, run_cli, snapshot
+
+from unityscaffold.unity.scene import SceneDocument
+
+HEADER = """\
+version: 1
+ros: 2
+project: .
+scene: Assets/Scenes/Main.unity
+robots:
+  - urdf: ros/bot.urdf
+"""
+INERTIAL = (
+    '<inertial><mass value="{mass}"/>'
+    '<inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0" izz="3"/></inertial>'
+)
+URDF = f"""<robot name="bot">
+  <material name="blue"><color rgba="0 0 0.8 1"/></material>
+  <gazebo>
+    <plugin name="p"/>
+  </gazebo>
+  <link name="base">
+    {INERTIAL.format(mass=2)}
+    <visual><geometry><box size="1 2 3"/></geometry><material name="blue"/></visual>
+    <collision><geometry><cylinder radius="0.5" length="2"/></geometry></collision>
+  </link>
+  <link name="arm">
+    {INERTIAL.format(mass=1)}
+    <visual><origin xyz="0 0 0.5"/><geometry><sphere radius="0.1"/></geometry></visual>
+    <collision><geometry><sphere radius="0.1"/></geometry></collision>
+  </link>
+  <joint name="j" type="revolute"><origin xyz="0 0 1"/><parent link="base"/><child link="arm"/>
+    <axis xyz="0 1 0"/><limit effort="1" velocity="1" lower="-1" upper="1"/></joint>
+</robot>
+"""
+TREE = [
+    "bot  [Transform, UrdfRobot]",
+    "  Plugins  [Transform, UrdfPlugins, UrdfPlugin]",
+    "  base  [Transform, UrdfLink, Rigidbody, UrdfInertial]",
+    "    Visuals  [Transform, UrdfVisuals]",
+    "      unnamed  [Transform, UrdfVisual]",
+    "        Cube  [Transform, MeshFilter, MeshRenderer]",
+    "    Collisions  [Transform, UrdfCollisions]",
+    "      unnamed  [Transform, UrdfCollision]",
+    "        Cylinder  [Transform, MeshCollider]",
+    "    arm  [Transform, UrdfLink, Rigidbody, UrdfInertial, UrdfJointRevolute, HingeJoint, "
+    "HingeJointLimitsManager, HingeJointAngleCalculator]",
+    "      Visuals  [Transform, UrdfVisuals]",
+    "        unnamed  [Transform, UrdfVisual]",
+    "          Sphere  [Transform, MeshFilter, MeshRenderer]",
+    "      Collisions  [Transform, UrdfCollisions]",
+    "        unnamed  [Transform, UrdfCollision]",
+    "          Sphere  [Transform, SphereCollider]",
+]
+SCENE = "Assets/Scenes/Main.unity"
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    return build_tree(tmp_path / "p", {"ros/bot.urdf": URDF})
+
+
+def _apply(project: Path, body: str = "", *extra: str):  # type: ignore[no-untyped-def]
+    (project / "robot.yaml").write_text(HEADER + body)
+    return run_cli("apply", str(project / "robot.yaml"), *extra)
+
+
+def _tree(project: Path) -> list[str]:
+    listed = run_cli("scene", "ls", str(project / SCENE)).out.splitlines()
+    start = listed.index(TREE[0])
+    return [line for line in listed[start:] if line.startswith(" ") or line == TREE[0]][: len(TREE)]
+
+
+def _field(project: Path, path: str, class_name: str, name: str) -> object:
+    scene = SceneDocument.load(project / SCENE)
+    found = [
+        c
+        for _, go in scene.tree()
+        if go.path == path
+        for c in scene.components_of(go)
+        if c.type_name == class_name
+    ]
+    return scene.field(found[0], name)
+
+
+def test_a_robot_is_built_as_rossharps_importer_builds_it(project: Path) -> None:
+    run = _apply(project)
+    assert run.code == 0, run.err
+    assert _tree(project) == TREE
+    assert "import robot bot" in run.out
+    assert (project / "Assets/Urdf/bot/Materials/blue.mat").is_file()
+    assert (project / "Assets/Urdf/bot/Materials/blue.mat.meta").is_file()
+    # the joint names its parent's Rigidbody, the renderer the robot's material
+    hinge = _field(project, "bot/base/arm", "HingeJoint", "m_ConnectedBody")
+    body = SceneDocument.load(project / SCENE)
+    base = body.find_gameobject("bot/base")
+    rigidbody = next(c for c in body.components_of(base) if c.type_name == "Rigidbody")
+    assert hinge == {"fileID": str(rigidbody.file_id)}
+    guid = (project / "Assets/Urdf/bot/Materials/blue.mat.meta").read_text().split("guid: ")[1]
+    materials = _field(project, "bot/base/Visuals/unnamed/Cube", "MeshRenderer", "m_Materials")
+    assert materials == [{"fileID": "2100000", "guid": guid.split()[0], "type": "2"}]
+
+
+def test_a_second_apply_writes_nothing_and_check_is_clean(project: Path) -> None:
+    assert _apply(project).code == 0
+    before = snapshot(project)
+    again = _apply(project)
+    assert again.code == 0 and "the project matches the manifest" in again.out
+    assert snapshot(project) == before
+    assert _apply(project, "", "--check").code == 0
+
+
+def test_the_inspector_switches_and_the_root_pose_are_kept_as_declared(project: Path) -> None:
+    body = "    position: [0, 0.47, 0]\n    kinematic: true\n    gravity: false\n"
+    assert _apply(project, body).code == 0
+    assert _field(project, "bot/base/arm", "Rigidbody", "m_IsKinematic") == "1"
+    assert _field(project, "bot/base", "Rigidbody", "m_UseGravity") == "0"
+    assert _field(project, "bot", "Transform", "m_LocalPosition") == {
+        "x": "0",
+        "y": "0.47",
+        "z": "0",
+    }
+
+
+def test_a_changed_urdf_updates_the_robot_in_place_keeping_fileids(project: Path) -> None:
+    assert _apply(project).code == 0
+    first = SceneDocument.load(project / SCENE)
+    ids = {go.path: go.file_id for _, go in first.tree()}
+    (project / "ros/bot.urdf").write_text(URDF.replace('<mass value="1"/>', '<mass value="3"/>'))
+    run = _apply(project)
+    assert run.code == 0, run.err
+    assert "update bot/base/arm (robot bot)" in run.out
+    assert {go.path: go.file_id for _, go in SceneDocument.load(project / SCENE).tree()} == ids
+    assert _field(project, "bot/base/arm", "Rigidbody", "m_Mass") == "3"
+
+
+def test_drift_in_what_the_urdf_decides_is_reported_and_put_back(project: Path) -> None:
+    assert _apply(project).code == 0
+    path = project / SCENE
+    text = path.read_text()
+    path.write_text(text.replace("  m_Mass: 2\n", "  m_Mass: 5\n", 1))
+    assert _apply(project, "", "--check").code != 0
+    assert _apply(project).code == 0
+    assert path.read_text() == text
+
+
+def test_what_the_user_adds_to_a_link_is_kept(project: Path) -> None:
+    body = (
+        "objects:\n  - path: bot/base/Extra\n    components: [BoxCollider]\n"
+        "components:\n  - {script: JointStateWriter, gameobject: bot/base/arm}\n"
+    )
+    run = _apply(project, body)
+    assert run.code == 0, run.err
+    tree = run_cli("scene", "ls", str(project / SCENE)).out
+    assert "Extra  [Transform, BoxCollider]" in tree
+    assert "HingeJointAngleCalculator, JointStateWriter]" in tree
+    before = snapshot(project)
+    assert _apply(project, body).code == 0
+    assert snapshot(project) == before
+
+
+def test_a_mesh_geometry_is_refused_at_its_element_and_nothing_is_written(project: Path) -> None:
+    urdf = URDF.replace(
+        '<sphere radius="0.1"/></geometry></visual>',
+        '<mesh filename="package://bot_pkg/a.stl"/></geometry></visual>',
+    )
+    build_tree(project, {"ros/bot.urdf": urdf, "ros/bot_pkg/a.stl": "solid a\nendsolid a\n"})
+    (project / "robot.yaml").write_text(HEADER + "    packages: {bot_pkg: ros/bot_pkg}\n")
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert "bot.urdf:13:" in run.err and "<mesh> geometry is not written" in run.err
+    assert snapshot(project) == before
+
+
+def test_a_prismatic_joint_is_refused_at_its_joint(project: Path) -> None:
+    build_tree(project, {"ros/bot.urdf": URDF.replace('type="revolute"', 'type="prismatic"')})
+    (project / "robot.yaml").write_text(HEADER)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert "bot.urdf:16:3:" in run.err and "ConfigurableJoint" in run.err
+    assert snapshot(project) == before
+
+
+@pytest.mark.parametrize(
+    ("entry", "message"),
+    [
+        ("  - urdf: ros/missing.urdf\n", "robot.yaml:6:11: error: URDF file ros/missing.urdf"),
+        ("  - urdf: ros/bot.urdf\n    kinematik: true\n", "unknown key 'kinematik' in robot"),
+        ("  - urdf: ros/bot.xacro\n", "invalid value for 'urdf'"),
+        ("  - urdf: ros/bot.urdf\n    assets: Packages/x\n", "invalid value for 'assets'"),
+    ],
+)
+def test_a_bad_robot_entry_is_a_located_error(project: Path, entry: str, message: str) -> None:
+    (project / "robot.yaml").write_text(HEADER.replace("  - urdf: ros/bot.urdf\n", entry))
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2 and message in run.err, run.err
+    assert snapshot(project) == before

@@ -1,0 +1,88 @@
+"""The file half of the ``robots:`` section: each URDF imported once per plan (``urdf``
+stage), and the asset files it makes (materials, STL meshes) with their ``.meta`` files.
+
+The scene half (``_robots``) places the same import into the robot's scene.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path, PurePosixPath
+
+from unityscaffold.errors import located_at
+from unityscaffold.fileout import DesiredFile
+from unityscaffold.manifest.model import Manifest
+from unityscaffold.manifest.robot_entry import RobotEntry
+from unityscaffold.unity.mesh import MESH_FILE_ID
+from unityscaffold.unity.meta import folder_meta, meta_guid, native_format_meta
+from unityscaffold.urdf import RobotImport, import_robot
+
+__all__ = ["PlannedRobot", "plan_robots"]
+
+_MATERIAL_FILE_ID = 2100000  # a Material inside its .mat (class 21 × 100000)
+_MAIN_OBJECT = {".mat": _MATERIAL_FILE_ID, ".asset": MESH_FILE_ID}
+
+
+@dataclass(frozen=True, slots=True)
+class PlannedRobot:
+    """One ``robots:`` entry with its import: where the robot goes (``gameobject``), its asset
+    folder (``assets``, project-relative), the files there, and the GUID of each asset by its
+    path inside that folder (``Materials/blue.mat``)."""
+
+    entry: RobotEntry
+    imported: RobotImport
+    gameobject: str
+    assets: str
+    files: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
+    metas: tuple[DesiredFile, ...]  # folder .meta files: written only if missing
+    guids: dict[str, str]
+
+
+def plan_robots(manifest: Manifest, salt: str) -> list[PlannedRobot]:
+    return [_plan(manifest, entry, salt) for entry in manifest.robots]
+
+
+def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
+    root = manifest.project_root
+    with located_at(entry.locations.of("urdf")):
+        imported = import_robot(
+            entry.urdf,
+            packages=dict(entry.packages),
+            project=manifest.path.parent,
+            plugin_newline=entry.plugin_newline,
+        )
+    name = imported.robot.name
+    assets = entry.assets or f"Assets/Urdf/{name}"
+    files, guids = [], {}
+    for relative, text in imported.files.items():
+        asset = f"{assets}/{relative}"
+        guid = meta_guid(root / f"{asset}.meta", salt, asset)
+        guids[relative] = guid
+        main = _MAIN_OBJECT[PurePosixPath(relative).suffix]
+        files.append(DesiredFile(root / asset, text.encode("utf-8")))
+        files.append(DesiredFile(root / f"{asset}.meta", native_format_meta(guid, main).encode()))
+    return PlannedRobot(
+        entry,
+        imported,
+        entry.gameobject or name,
+        assets,
+        tuple(files),
+        tuple(_folder_metas(root, assets, imported.files, salt)),
+        guids,
+    )
+
+
+def _folder_metas(root: Path, assets: str, files: object, salt: str) -> list[DesiredFile]:
+    """A ``.meta`` for each folder on the way to the files, made once (Unity would make
+    them itself, with random GUIDs)."""
+    folders: set[str] = set()
+    for relative in files:  # type: ignore[attr-defined]
+        parts = f"{assets}/{relative}".split("/")[:-1]
+        folders.update("/".join(parts[: i + 1]) for i in range(1, len(parts)))
+    metas = []
+    for folder in sorted(folders):
+        guid = meta_guid(root / f"{folder}.meta", salt, folder)
+        metas.append(
+            DesiredFile(root / f"{folder}.meta", folder_meta(guid).encode(), create_only=True)
+        )
+    return metas

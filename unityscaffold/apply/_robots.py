@@ -1,0 +1,278 @@
+"""The scene half of the ``robots:`` section: each robot's imported GameObjects written into its
+scene, known by fileIDs derived from the robot's GameObject path and each object's URDF key.
+
+``place_robots`` runs before ``objects:`` and ``components:``, so that those can target links
+(``r2d2/base_link/head``) and refer to them (``@r2d2/base_link``). What the URDF sets is
+enforced on every run; what the user added (components, children, fields the import leaves
+alone) is kept (``unity.owned``).
+
+The seam for model files: a visual or collision ``<mesh>`` becomes an object of role
+``Role.MODEL``, which ``_model_object`` turns into scene objects. Until the STL prefabs and DAE
+model instances are written there, a URDF with a mesh geometry is a located error at the
+``<mesh>`` element, never a robot with holes in it.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+
+from unityscaffold.apply._context import SceneContext
+from unityscaffold.apply._editor import SceneEditor
+from unityscaffold.apply._robot_plan import PlannedRobot
+from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
+from unityscaffold.unity import AssetRef, InlineMap, ObjectRef, SceneDocument
+from unityscaffold.unity.builtins import builtin_class
+from unityscaffold.unity.mesh import mesh_document
+from unityscaffold.unity.owned import (
+    OwnedComponent,
+    OwnedDocument,
+    OwnedObject,
+    owned_file_id,
+)
+from unityscaffold.unity.rotation import euler_to_quaternion
+from unityscaffold.unity.values import FieldValue
+from unityscaffold.urdf import Robot
+from unityscaffold.urdf.cylinder import cylinder_collider_mesh
+from unityscaffold.urdf.objects import (
+    CYLINDER_MESH,
+    ComponentRef,
+    ImportedComponent,
+    ImportedObject,
+    MaterialRef,
+    Role,
+    Value,
+)
+
+__all__ = ["place_robots"]
+
+_MATERIAL_FILE_ID = 2100000
+_KEY_PART = re.compile(r"(\w+)\[(\d+)\]")
+# the rest of HingeJoint's m_Limits, which the import leaves at a new joint's values
+_LIMITS_REST = {"bounciness": 0.0, "bounceMinVelocity": 0.2, "contactDistance": 0.0}
+
+
+def place_robots(ctx: SceneContext, editor: SceneEditor, robots: Sequence[PlannedRobot]) -> None:
+    """Every robot of this scene written into it (see the module's docstring)."""
+    for robot in robots:
+        if robot.entry.scene != editor.plan.relative:
+            continue
+        with located_at(robot.entry.locations.of("urdf")):
+            _refuse_unwritten(robot)
+        with located_at(robot.entry.locations.item):
+            _place(ctx, editor, robot)
+
+
+def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot) -> None:
+    doc = editor.doc
+    parent_path, _, _ = robot.gameobject.rpartition("/")
+    parent = 0
+    if parent_path:
+        holder = editor.gameobject(parent_path, True, robot.entry.locations.of("gameobject"))
+        parent = holder.transform_id or 0
+    writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
+    objects = writer.objects(robot.imported.objects, parent)
+    said = doc.sync_owned(objects, writer.documents)
+    if any(line.startswith("create ") for line in said) and len(said) > 3:
+        made = sum(line.startswith("create ") for line in said)
+        editor.plan.edits.append(f"import robot {robot.gameobject} ({made} new objects)")
+        said = [line for line in said if not line.startswith("create ")]
+    editor.plan.edits += [f"{line} (robot {robot.gameobject})" for line in said]
+
+
+def _class_of(doc: SceneDocument, file_id: int) -> int | None:
+    found = doc.document(file_id)
+    return None if found is None else found.class_id
+
+
+@dataclass(slots=True)
+class _Writer:
+    """Turns the import's tree into owned objects with their fileIDs and references."""
+
+    ctx: SceneContext
+    robot: PlannedRobot
+    class_of: Callable[[int], int | None]
+    used: set[int] = field(default_factory=set)
+    ids: dict[tuple[str, str], int] = field(default_factory=dict)
+    documents: list[OwnedDocument] = field(default_factory=list)
+
+    def file_id(self, key: str, role: str, class_id: int) -> int:
+        slot = (key, role)
+        if slot not in self.ids:
+            parts = ("robot", self.robot.gameobject, key, role)
+            self.ids[slot] = owned_file_id(parts, class_id, self.class_of, self.used)
+        return self.ids[slot]
+
+    def objects(self, root: ImportedObject, parent: int) -> list[OwnedObject]:
+        """Every object, parents first; every fileID is picked before any field refers to one."""
+        walked = [o for _, o in root.walk()]
+        for obj in walked:
+            self.file_id(obj.key, "GameObject", 1)
+            self.file_id(obj.key, "Transform", 4)
+            for component, role in _roles(obj.components):
+                self.file_id(obj.key, role, _class_id(component))
+        parents = {c.key: self.ids[(o.key, "Transform")] for o in walked for c in o.children}
+        paths = dict(_paths(root, self.robot.gameobject))
+        return [self._object(obj, parents.get(obj.key, parent), paths[obj.key]) for obj in walked]
+
+    def _object(self, obj: ImportedObject, parent: int, path: str) -> OwnedObject:
+        components = tuple(
+            self._component(obj, component, role) for component, role in _roles(obj.components)
+        )
+        return OwnedObject(
+            self.ids[(obj.key, "GameObject")],
+            self.ids[(obj.key, "Transform")],
+            obj.name,
+            path,
+            parent,
+            self._transform(obj),
+            components,
+            tuple(self.ids[(c.key, "Transform")] for c in obj.children),
+            hide_flags=8 if obj.not_editable else 0,
+        )
+
+    def _transform(self, obj: ImportedObject) -> tuple[tuple[str, FieldValue], ...]:
+        pose = obj.transform
+        rotation, position = pose.rotation, pose.position
+        fields: list[tuple[str, FieldValue]] = []
+        entry = self.robot.entry
+        if obj.role is Role.ROBOT:
+            if entry.rotation is not None:
+                rotation = euler_to_quaternion(*entry.rotation)
+            if entry.position is not None:
+                position = entry.position
+        fields += [
+            ("m_LocalRotation", _map("xyzw", rotation)),
+            ("m_LocalPosition", _map("xyz", position)),
+            ("m_LocalScale", _map("xyz", pose.scale)),
+        ]
+        if obj.role is Role.ROBOT and entry.rotation is not None:
+            fields.append(("m_LocalEulerAnglesHint", _map("xyz", entry.rotation)))
+        return tuple(fields)
+
+    def _component(
+        self, obj: ImportedObject, component: ImportedComponent, role: str
+    ) -> OwnedComponent:
+        file_id = self.ids[(obj.key, role)]
+        fields = [(name, self._value(obj, value)) for name, value in component.fields]
+        fields = _with_switches(component.name, fields, self.robot, obj)
+        builtin = builtin_class(component.name, imported=True)
+        if builtin is not None:
+            if component.name == "HingeJoint":
+                fields = [(n, _full_limits(v) if n == "m_Limits" else v) for n, v in fields]
+            return OwnedComponent(file_id, component.name, builtin=builtin, fields=tuple(fields))
+        script = self.ctx.rossharp.script(component.name)
+        defaults = self.ctx.defaults(script).values
+        return OwnedComponent(
+            file_id, component.name, script=script, fields=tuple(fields), defaults=defaults
+        )
+
+    def _value(self, obj: ImportedObject, value: Value) -> FieldValue:
+        if isinstance(value, ComponentRef):
+            return ObjectRef(self._component_id(value))
+        if isinstance(value, MaterialRef):
+            guid = self.robot.guids[f"Materials/{value.name}.mat"]
+            return AssetRef(_MATERIAL_FILE_ID, guid, 2)
+        if value is CYLINDER_MESH:
+            return ObjectRef(self._cylinder(obj))
+        if isinstance(value, list | tuple):
+            return [self._value(obj, item) for item in value]
+        return value  # type: ignore[return-value]
+
+    def _component_id(self, ref: ComponentRef) -> int:
+        role = f"{ref.component}#0"
+        if (ref.key, role) not in self.ids:
+            raise UserError(f"the import refers to {ref.component} of {ref.key}, which it lacks")
+        return self.ids[(ref.key, role)]
+
+    def _cylinder(self, obj: ImportedObject) -> int:
+        file_id = self.file_id(obj.key, "Mesh", 43)
+        if not any(d.file_id == file_id for d in self.documents):
+            text = mesh_document(file_id, "", cylinder_collider_mesh(), keep=True)
+            self.documents.append(OwnedDocument(43, file_id, text))
+        return file_id
+
+
+def _roles(components: Sequence[ImportedComponent]) -> Iterator[tuple[ImportedComponent, str]]:
+    """Each component with its role on its object: ``UrdfPlugin#2`` is the third UrdfPlugin."""
+    seen: dict[str, int] = {}
+    for component in components:
+        n = seen.get(component.name, 0)
+        seen[component.name] = n + 1
+        yield component, f"{component.name}#{n}"
+
+
+def _class_id(component: ImportedComponent) -> int:
+    builtin = builtin_class(component.name, imported=True)
+    return builtin.class_id if builtin is not None else 114
+
+
+def _paths(root: ImportedObject, at: str) -> Iterator[tuple[str, str]]:
+    pending = [(root, at)]
+    while pending:
+        obj, path = pending.pop()
+        yield obj.key, path
+        pending += [(child, f"{path}/{child.name}") for child in obj.children]
+
+
+def _map(keys: str, values: Sequence[float]) -> InlineMap:
+    return InlineMap(tuple(zip(keys, values, strict=True)))
+
+
+def _full_limits(value: FieldValue) -> FieldValue:
+    return {**value, **_LIMITS_REST} if isinstance(value, Mapping) else value
+
+
+def _with_switches(
+    name: str, fields: list[tuple[str, FieldValue]], robot: PlannedRobot, obj: ImportedObject
+) -> list[tuple[str, FieldValue]]:
+    """UrdfRobot's inspector switches, as its buttons set them after an import."""
+    entry = robot.entry
+    extra: list[tuple[str, FieldValue]] = []
+    if name == "Rigidbody":
+        if entry.gravity is not None:
+            extra.append(("m_UseGravity", entry.gravity))
+        if entry.kinematic is not None:
+            extra.append(("m_IsKinematic", entry.kinematic))
+    if name == "MeshCollider" and entry.convex is not None and obj.role is Role.SHAPE:
+        fields = [(n, v) for n, v in fields if n != "m_Convex"]
+        extra.append(("m_Convex", entry.convex))
+    return fields + extra
+
+
+def _refuse_unwritten(robot: PlannedRobot) -> None:
+    """Mesh geometry (the model seam, see the module's docstring) and joints that need a
+    ConfigurableJoint are not written yet: refused at their element."""
+    urdf = robot.imported.robot
+    problems = []
+    for _, obj in robot.imported.objects.walk():
+        if obj.role is Role.MODEL:
+            problems.append(
+                (
+                    _element(urdf, obj.key),
+                    "a <mesh> geometry is not written into scenes yet",
+                    "use a box, cylinder or sphere for now",
+                )
+            )
+        if any(c.name == "ConfigurableJoint" for c in obj.components):
+            joint = next(j for j in urdf.joints if j.child == obj.name)
+            problems.append(
+                (
+                    joint.location,
+                    f"a {joint.type.value} joint needs a ConfigurableJoint, whose Unity 2022.3 "
+                    "layout is not checked yet",
+                    "use a fixed, revolute or continuous joint for now",
+                )
+            )
+    if problems:
+        raise LocatedError(Diagnostic(where, what, hint=hint) for where, what, hint in problems)
+
+
+def _element(urdf: Robot, key: str) -> SourceLocation:
+    """Where the ``<mesh>`` of ``link[i]/visual[j]/shape`` (or collision) is written."""
+    found = dict((name, int(i)) for name, i in _KEY_PART.findall(key))
+    link = urdf.links[found["link"]]
+    if "visual" in found:
+        return link.visuals[found["visual"]].geometry.location
+    return link.collisions[found["collision"]].geometry.location

@@ -1,0 +1,155 @@
+"""Edits for owned objects (see ``owned``): created when missing, owned fields enforced, the
+rest kept."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from unityscaffold.errors import UserError
+from unityscaffold.unity import _fields as F
+from unityscaffold.unity import _textops as T
+from unityscaffold.unity._builders import (
+    component_item,
+    new_builtin,
+    new_gameobject,
+    new_monobehaviour,
+    new_transform,
+)
+from unityscaffold.unity._classids import SCENE_ROOTS_CLASS
+from unityscaffold.unity._documents import Documents
+from unityscaffold.unity._edits import _emit, _exemplar, set_fields
+from unityscaffold.unity._split import Doc
+from unityscaffold.unity.owned import OwnedComponent, OwnedDocument, OwnedObject
+from unityscaffold.unity.values import Verbatim
+
+__all__ = ["sync_owned"]
+
+
+def sync_owned(
+    docs: Documents, objects: Sequence[OwnedObject], documents: Sequence[OwnedDocument]
+) -> list[str]:
+    """Make ``objects`` (parents before children) and ``documents`` as declared; one line per
+    object that was created or changed."""
+    era = docs.era
+    if era.root_order or not era.modern_prefab_fields or not era.scene_roots:
+        raise UserError(
+            f"{docs.path} was saved by a Unity older than 2022.2; robots are written in "
+            "Unity 2022.3's layout",
+            hint="open the scene in Unity 2022.3 or later and save it once",
+        )
+    said: list[str] = []
+    for item in documents:
+        _document(docs, item, said)
+    for obj in objects:
+        revision = docs.revision
+        created = docs.get(obj.file_id) is None
+        if created:
+            _create(docs, obj)
+        _enforce(docs, obj)
+        for component in obj.components:
+            _component(docs, obj, component)
+        if created:
+            said.append(f"create {obj.path}")
+        elif docs.revision != revision:
+            said.append(f"update {obj.path}")
+    docs.invalidate()
+    return said
+
+
+def _document(docs: Documents, item: OwnedDocument, said: list[str]) -> None:
+    doc = docs.get(item.file_id)
+    if doc is None:
+        docs.insert(Doc(item.class_id, item.file_id, False, item.text))
+        said.append(f"create {_label(item)}")
+    elif doc.text != item.text:
+        T.set_text(doc, item.text)
+        docs.touch(doc)
+        said.append(f"update {_label(item)}")
+
+
+def _label(item: OwnedDocument) -> str:
+    return f"--- !u!{item.class_id} &{item.file_id}"
+
+
+def _create(docs: Documents, obj: OwnedObject) -> None:
+    era = docs.era
+    go = new_gameobject(era, _exemplar(docs, 1), obj.file_id, obj.name, obj.transform_id)
+    tr = new_transform(era, _exemplar(docs, 4), obj.transform_id, obj.file_id, obj.parent, None)
+    docs.insert(Doc(1, obj.file_id, False, go))
+    docs.insert(Doc(4, obj.transform_id, False, tr))
+
+
+def _enforce(docs: Documents, obj: OwnedObject) -> None:
+    go, tr = docs.require(obj.file_id), docs.require(obj.transform_id)
+    if go.class_id != 1 or tr.class_id != 4:
+        raise UserError(
+            f"{docs.path}: &{obj.file_id} or &{obj.transform_id} is not the GameObject and "
+            f"Transform apply made for {obj.path}",
+            hint="the scene was edited outside Unity; restore it from version control",
+        )
+    set_fields(docs, go, [("m_ObjectHideFlags", obj.hide_flags), ("m_Name", obj.name)])
+    set_fields(docs, tr, [("m_ObjectHideFlags", obj.hide_flags), *obj.transform])
+    wanted = [obj.transform_id, *(c.file_id for c in obj.components)]
+    classes = [4, *(c.class_id for c in obj.components)]
+    items = [component_item(docs.era, c, i) for i, c in zip(wanted, classes, strict=True)]
+    _list(docs, go, "m_Component", wanted, items)
+    _list(
+        docs, tr, "m_Children", list(obj.children), [f"  - {{fileID: {i}}}" for i in obj.children]
+    )
+    _father(docs, obj, tr)
+
+
+def _list(docs: Documents, doc: Doc, key: str, wanted: list[int], items: list[str]) -> None:
+    """``key``'s list: the owned ``wanted`` first, in order, then the others it held."""
+    held = F.list_refs(doc, key)
+    kept = [i for i in held if i not in set(wanted)]
+    order = wanted + kept
+    if held == order:
+        return
+    lines = items + [line for i in kept for line in _held_line(doc, key, i)]
+    T.replace_field(doc, key, [f"  {key}:", *lines] if lines else [f"  {key}: []"])
+    docs.touch(doc)
+
+
+def _held_line(doc: Doc, key: str, file_id: int) -> list[str]:
+    text = F.field_text(doc, key) or ""
+    return [line for line in text.split("\n") if f"{{fileID: {file_id}}}" in line][:1]
+
+
+def _father(docs: Documents, obj: OwnedObject, tr: Doc) -> None:
+    if F.ref_value(tr, "m_Father") != obj.parent:
+        T.replace_field(tr, "m_Father", [f"  m_Father: {{fileID: {obj.parent}}}"])
+        docs.touch(tr)
+    if obj.parent:
+        return
+    roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
+    if obj.transform_id not in F.list_refs(roots, "m_Roots"):
+        T.append_list_item(roots, "m_Roots", f"  - {{fileID: {obj.transform_id}}}")
+        docs.touch(roots)
+
+
+def _component(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> None:
+    doc = docs.get(component.file_id)
+    if doc is None:
+        doc = Doc(component.class_id, component.file_id, False, _new(docs, obj, component))
+        docs.insert(doc)
+    set_fields(docs, doc, list(component.fields))
+
+
+def _new(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> str:
+    if component.builtin is not None:
+        return new_builtin(component.file_id, obj.file_id, component.builtin)
+    assert component.script is not None
+    given = dict(component.fields)
+    lines: list[str] = []
+    for name, default in component.defaults:
+        if name in given:
+            lines += _emit(docs, name, given[name])
+        elif isinstance(default, Verbatim):
+            lines += default.text.split("\n")
+        else:
+            lines += _emit(docs, name, default)
+    exemplar = _exemplar(docs, 114)
+    return new_monobehaviour(
+        docs.era, exemplar, component.file_id, obj.file_id, component.script, lines
+    )
