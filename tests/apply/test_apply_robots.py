@@ -208,3 +208,65 @@ def test_a_bad_robot_entry_is_a_located_error(project: Path, entry: str, message
     run = run_cli("apply", str(project / "robot.yaml"))
     assert run.code == 2 and message in run.err, run.err
     assert snapshot(project) == before
+
+
+WITHOUT_ARM = URDF.split('  <link name="arm">')[0] + "</robot>\n"
+
+
+def test_a_link_gone_from_the_urdf_is_removed_with_everything_apply_made_under_it(
+    project: Path,
+) -> None:
+    assert _apply(project).code == 0
+    (project / "ros/bot.urdf").write_text(WITHOUT_ARM)
+    run = _apply(project)
+    assert run.code == 0, run.err
+    assert "remove bot/base/arm (robot bot)" in run.out
+    assert _tree(project)[:9] == TREE[:9]
+    assert "arm" not in run_cli("scene", "ls", str(project / SCENE)).out
+    before = snapshot(project)
+    assert _apply(project).code == 0
+    assert snapshot(project) == before
+
+
+def test_a_link_gone_from_the_urdf_stays_while_the_user_has_something_on_it(
+    project: Path,
+) -> None:
+    user = "components:\n  - {script: JointStateWriter, gameobject: bot/base/arm}\n"
+    assert _apply(project, user).code == 0
+    (project / "ros/bot.urdf").write_text(WITHOUT_ARM)
+    run = _apply(project, user)
+    assert run.code == 0, run.err
+    assert "note: kept bot/base/arm (robot bot), which the URDF no longer has" in run.out
+    listed = run_cli("scene", "ls", str(project / SCENE)).out
+    assert "arm  [Transform, JointStateWriter]" in listed
+    # once the user's component goes, so does the link
+    run = _apply(project)
+    assert run.code == 0, run.err
+    assert "arm" not in run_cli("scene", "ls", str(project / SCENE)).out
+
+
+def test_a_robot_dropped_from_the_manifest_leaves_the_scene_as_it_was(project: Path) -> None:
+    (project / "robot.yaml").write_text(HEADER.split("robots:")[0])
+    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    scene = (project / SCENE).read_text()
+    assert _apply(project).code == 0
+    (project / "robot.yaml").write_text(HEADER.split("robots:")[0])
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 0, run.err
+    assert (project / SCENE).read_text() == scene
+    assert not (project / "Assets/Urdf/bot/Materials/blue.mat").exists()
+    assert not (project / "Assets/Urdf/bot/Materials/blue.mat.meta").exists()
+
+
+def test_a_material_gone_from_the_urdf_is_pruned_with_its_meta(project: Path) -> None:
+    assert _apply(project).code == 0
+    (project / "ros/bot.urdf").write_text(
+        URDF.replace('<material name="blue"><color rgba="0 0 0.8 1"/></material>', "").replace(
+            '<material name="blue"/>', ""
+        )
+    )
+    run = _apply(project)
+    assert run.code == 0, run.err
+    assert not (project / "Assets/Urdf/bot/Materials/blue.mat").exists()
+    assert not (project / "Assets/Urdf/bot/Materials/blue.mat.meta").exists()
+    assert (project / "Assets/Urdf/bot/Materials/Default.mat").exists()

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from helpers import run_cli, snapshot
 
-from unityscaffold.apply._lock import LockComponent, LockFile, lock_path
+from unityscaffold.apply._lock import LockComponent, LockFile, LockRobot, lock_path
 from unityscaffold.errors import UserError
 
 
@@ -47,6 +47,18 @@ def test_kept_files_are_listed_only_when_there_are_some_and_read_back(tmp_path):
     assert '"kept": [\n    "Assets/a.cs",\n    "Assets/b.cs"\n  ]' in kept.render()
     path.write_text(kept.render())
     assert LockFile.read(path) == kept
+
+
+def test_robots_are_listed_only_when_there_are_some_merged_and_read_back(tmp_path):
+    path = tmp_path / "robot.lock.json"
+    assert '"robots"' not in LockFile().render()
+    made = LockRobot("Assets/S.unity", "r2d2", (9, 3))
+    kept = LockRobot("Assets/S.unity", "r2d2", (4,))
+    lock = LockFile(robots=(made, kept, LockRobot("Assets/S.unity", "gone", ())))
+    assert '"robots": {\n    "Assets/S.unity": {\n      "r2d2": [\n        3,' in lock.render()
+    path.write_text(lock.render())
+    assert LockFile.read(path).robot_ids("Assets/S.unity", "r2d2") == {3, 4, 9}
+    assert LockFile.read(path).robots == (LockRobot("Assets/S.unity", "r2d2", (3, 4, 9)),)
 
 
 def test_a_missing_lock_is_empty(tmp_path):
@@ -139,6 +151,19 @@ def _components(*items: str) -> str:
         (
             _lock(_components(), '"gameobjects": {"../S.unity": {}}'),
             f'gameobjects has the key "../S.unity", which is not {_INSIDE}',
+        ),
+        (
+            _lock(_components(), '"robots": {"Assets/S.unity": {"r2d2": 5}}'),
+            'robots["Assets/S.unity"]["r2d2"] should be a list of fileIDs, found the number 5',
+        ),
+        (
+            _lock(_components(), '"robots": {"Assets/S.unity": {"r2d2": [1, 0]}}'),
+            'robots["Assets/S.unity"]["r2d2"][1] should be a fileID (a positive 64-bit '
+            "integer), found the number 0",
+        ),
+        (
+            _lock(_components(), '"robots": {"S.unity": {}}'),
+            f'robots has the key "S.unity", which is not {_INSIDE}',
         ),
         (_lock(_components(), '"kept": {}'), "kept should be a list, found an object"),
         (_lock(_components(), '"kept": [3]'), "kept[0] should be a string, found the number 3"),

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._identity import Moved
-from unityscaffold.apply._lock import LockComponent
+from unityscaffold.apply._lock import LockComponent, LockRobot
 from unityscaffold.errors import SourceLocation, UserError, located_at
 from unityscaffold.unity import (
     GameObject,
@@ -39,6 +39,9 @@ class ScenePlan:
     components: list[LockComponent] = field(default_factory=list)
     gameobjects: dict[str, int] = field(default_factory=dict)  # path -> fileID, for the lock
     followed: list[Moved] = field(default_factory=list)  # manifest paths to rewrite
+    robots: list[LockRobot] = field(default_factory=list)  # what apply made for each robot
+    # robot -> objects an earlier apply made that stay while something else is on them
+    robot_leftovers: dict[str, dict[int, str]] = field(default_factory=dict)
 
     @property
     def changed(self) -> bool:

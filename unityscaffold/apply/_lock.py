@@ -30,6 +30,7 @@ __all__ = [
     "LockComponent",
     "LockFile",
     "LockGameObject",
+    "LockRobot",
     "journal_path",
     "lock_path",
     "recorded",
@@ -83,6 +84,16 @@ class LockGameObject:
     scene: str
     path: str
     file_id: int
+
+
+@dataclass(frozen=True, slots=True, order=True)
+class LockRobot:
+    """A robot apply imported: the fileIDs of every object it made for it in ``scene`` (so
+    what a changed URDF no longer has can be removed)."""
+
+    scene: str
+    gameobject: str
+    file_ids: tuple[int, ...]
 
 
 class _Malformed(Exception):
@@ -188,6 +199,22 @@ def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
     return tuple(found)
 
 
+def _robots(data: dict[str, object]) -> tuple[LockRobot, ...]:
+    scenes = _object(data.get("robots", {}), "robots")
+    found = []
+    for scene, robots in scenes.items():
+        shown = json.dumps(scene, ensure_ascii=False)
+        if not _inside_assets(scene):
+            raise _Malformed(f"robots has the key {shown}, which is not {_INSIDE_ASSETS}")
+        for path, ids in _object(robots, f"robots[{shown}]").items():
+            where = f"robots[{shown}][{json.dumps(path, ensure_ascii=False)}]"
+            if not isinstance(ids, list):
+                raise _wrong(where, "a list of fileIDs", ids)
+            file_ids = tuple(_file_id(i, f"{where}[{n}]") for n, i in enumerate(ids))
+            found.append(LockRobot(scene, path, file_ids))
+    return tuple(found)
+
+
 def _kept(data: dict[str, object]) -> frozenset[str]:
     entries = data.get("kept", [])
     if not isinstance(entries, list):
@@ -210,6 +237,7 @@ def _parse(text: str) -> LockFile:
         _components(data),
         _gameobjects(data),
         _kept(data),
+        _robots(data),
     )
 
 
@@ -220,6 +248,16 @@ class LockFile:
     components: tuple[LockComponent, ...] = ()
     gameobjects: tuple[LockGameObject, ...] = ()
     kept: frozenset[str] = frozenset()  # files kept as edited by hand, and told so
+    robots: tuple[LockRobot, ...] = ()
+
+    def robot_ids(self, scene: str, gameobject: str) -> frozenset[int]:
+        """The fileIDs apply made for the robot at ``gameobject`` in ``scene``."""
+        return frozenset(
+            i
+            for r in self.robots
+            if (r.scene, r.gameobject) == (scene, gameobject)
+            for i in r.file_ids
+        )
 
     def gameobjects_in(self, scene: str) -> dict[str, int]:
         """Path -> fileID of the GameObjects recorded in ``scene``."""
@@ -282,6 +320,16 @@ class LockFile:
                 )
             ),
             self.kept | journal.kept,
+            tuple(
+                LockRobot(
+                    scene,
+                    path,
+                    tuple(sorted(self.robot_ids(scene, path) | journal.robot_ids(scene, path))),
+                )
+                for scene, path in sorted(
+                    {(r.scene, r.gameobject) for r in (*self.robots, *journal.robots)}
+                )
+            ),
         )
 
     def render(self) -> str:
@@ -307,5 +355,15 @@ class LockFile:
             },
             # only when there are any: locks without kept files read as they did before
             **({"kept": sorted(self.kept)} if self.kept else {}),
+            **({"robots": robots} if (robots := self._rendered_robots()) else {}),
         }
         return json.dumps(data, indent=2, sort_keys=False, ensure_ascii=False) + "\n"
+
+    def _rendered_robots(self) -> dict[str, dict[str, list[int]]]:
+        """Scene -> robot -> fileIDs; entries of one robot merged, empty ones left out."""
+        found: dict[str, dict[str, list[int]]] = {}
+        for scene, robot in sorted({(r.scene, r.gameobject) for r in self.robots}):
+            ids = sorted(self.robot_ids(scene, robot))
+            if ids:
+                found.setdefault(scene, {})[robot] = ids
+        return found

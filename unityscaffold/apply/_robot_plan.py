@@ -6,6 +6,7 @@ The scene half (``_robots``) places the same import into the robot's scene.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
@@ -34,7 +35,7 @@ class PlannedRobot:
     gameobject: str
     assets: str
     files: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
-    metas: tuple[DesiredFile, ...]  # folder .meta files: written only if missing
+    metas: tuple[DesiredFile, ...]  # .meta files: written only if missing
     guids: dict[str, str]
 
 
@@ -53,30 +54,33 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
         )
     name = imported.robot.name
     assets = entry.assets or f"Assets/Urdf/{name}"
-    files, guids = [], {}
+    files, metas, guids = [], [], {}
     for relative, text in imported.files.items():
         asset = f"{assets}/{relative}"
         guid = meta_guid(root / f"{asset}.meta", salt, asset)
         guids[relative] = guid
         main = _MAIN_OBJECT[PurePosixPath(relative).suffix]
         files.append(DesiredFile(root / asset, text.encode("utf-8")))
-        files.append(DesiredFile(root / f"{asset}.meta", native_format_meta(guid, main).encode()))
+        # like a script's: an existing .meta keeps its GUID, so it is only ever created (and
+        # pruned with its asset)
+        meta = native_format_meta(guid, main).encode()
+        metas.append(DesiredFile(root / f"{asset}.meta", meta, create_only=True))
     return PlannedRobot(
         entry,
         imported,
         entry.gameobject or name,
         assets,
         tuple(files),
-        tuple(_folder_metas(root, assets, imported.files, salt)),
+        tuple(metas + _folder_metas(root, assets, imported.files, salt)),
         guids,
     )
 
 
-def _folder_metas(root: Path, assets: str, files: object, salt: str) -> list[DesiredFile]:
+def _folder_metas(root: Path, assets: str, files: Iterable[str], salt: str) -> list[DesiredFile]:
     """A ``.meta`` for each folder on the way to the files, made once (Unity would make
     them itself, with random GUIDs)."""
     folders: set[str] = set()
-    for relative in files:  # type: ignore[attr-defined]
+    for relative in files:
         parts = f"{assets}/{relative}".split("/")[:-1]
         folders.update("/".join(parts[: i + 1]) for i in range(1, len(parts)))
     metas = []

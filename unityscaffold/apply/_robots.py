@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
+from unityscaffold.apply._lock import LockFile, LockRobot
 from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.unity import AssetRef, InlineMap, ObjectRef, SceneDocument
@@ -53,18 +54,57 @@ _KEY_PART = re.compile(r"(\w+)\[(\d+)\]")
 _LIMITS_REST = {"bounciness": 0.0, "bounceMinVelocity": 0.2, "contactDistance": 0.0}
 
 
-def place_robots(ctx: SceneContext, editor: SceneEditor, robots: Sequence[PlannedRobot]) -> None:
-    """Every robot of this scene written into it (see the module's docstring)."""
-    for robot in robots:
-        if robot.entry.scene != editor.plan.relative:
-            continue
+def place_robots(
+    ctx: SceneContext, editor: SceneEditor, robots: Sequence[PlannedRobot], lock: LockFile
+) -> None:
+    """Every robot of this scene written into it (see the module's docstring), and what an
+    earlier apply made for robots the manifest no longer has removed."""
+    scene = editor.plan.relative
+    here = [robot for robot in robots if robot.entry.scene == scene]
+    for robot in here:
         with located_at(robot.entry.locations.of("urdf")):
             _refuse_unwritten(robot)
         with located_at(robot.entry.locations.item):
-            _place(ctx, editor, robot)
+            _place(ctx, editor, robot, lock.robot_ids(scene, robot.gameobject))
+    placed = {robot.gameobject for robot in here}
+    for old in lock.robots:
+        if old.scene == scene and old.gameobject not in placed:
+            _remove(editor, old.gameobject, set(old.file_ids))
 
 
-def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot) -> None:
+def _remove(editor: SceneEditor, robot: str, ids: set[int]) -> None:
+    """Remove what ``robot`` no longer makes; what cannot go yet waits for ``remove_kept``."""
+    removed, kept = editor.doc.remove_owned(ids)
+    editor.plan.edits += [f"remove {path} (robot {robot})" for path in removed]
+    editor.plan.robot_leftovers.setdefault(robot, {}).update(kept)
+
+
+def remove_kept(editor: SceneEditor) -> None:
+    """Once every other entry of the scene is done: what a robot kept because something else
+    was on it is tried again (what apply itself pruned since no longer counts, so a second
+    apply finds nothing more to remove), and what stays is said and stays recorded."""
+    scene = editor.plan.relative
+    for robot, kept in sorted(editor.plan.robot_leftovers.items()):
+        removed, still = editor.doc.remove_owned(set(kept))
+        editor.plan.edits += [f"remove {path} (robot {robot})" for path in removed]
+        for file_id, path in sorted(still.items(), key=lambda item: item[1]):
+            if editor.doc.document(file_id) is not None and _is_gameobject(editor, file_id):
+                editor.plan.edits.append(
+                    f"note: kept {path} (robot {robot}), which the URDF no longer has: "
+                    "something else is on it (a component, a child or a reference); delete "
+                    "it in Unity if it is not needed"
+                )
+        editor.plan.robots.append(LockRobot(scene, robot, tuple(sorted(still))))
+
+
+def _is_gameobject(editor: SceneEditor, file_id: int) -> bool:
+    found = editor.doc.document(file_id)
+    return found is not None and found.class_id == 1
+
+
+def _place(
+    ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, before: frozenset[int]
+) -> None:
     doc = editor.doc
     parent_path, _, _ = robot.gameobject.rpartition("/")
     parent = 0
@@ -73,6 +113,10 @@ def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot) -> None:
         parent = holder.transform_id or 0
     writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
     objects = writer.objects(robot.imported.objects, parent)
+    _remove(editor, robot.gameobject, set(before - writer.used))
+    editor.plan.robots.append(
+        LockRobot(editor.plan.relative, robot.gameobject, tuple(sorted(writer.used)))
+    )
     said = doc.sync_owned(objects, writer.documents)
     if any(line.startswith("create ") for line in said) and len(said) > 3:
         made = sum(line.startswith("create ") for line in said)

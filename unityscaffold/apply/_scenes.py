@@ -32,7 +32,7 @@ from unityscaffold.apply._order import order_objects
 from unityscaffold.apply._references import typed_reference
 from unityscaffold.apply._renames import follow
 from unityscaffold.apply._robot_plan import PlannedRobot
-from unityscaffold.apply._robots import place_robots
+from unityscaffold.apply._robots import place_robots, remove_kept
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
 from unityscaffold.manifest.model import (
@@ -76,7 +76,7 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
             ref = scripts[id(c)]
             slot = (editor.path(c.gameobject), ref.guid, ref.file_id)
             editor.keys.setdefault(slot, []).append(c.key)
-    place_robots(ctx, editor, ctx.robots)
+    place_robots(ctx, editor, ctx.robots, lock)
     objects = _declare_objects(ctx, editor)
     needs_connector = [
         c
@@ -97,6 +97,7 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
         set_builtin_references(editor.doc, objects)
     set_references(ctx, editor, pending)
     editor.prune(lock.components, editor.wanted)
+    remove_kept(editor)
     _prune_gameobjects(plan, doc, lock)
     objects_here = [o for o in m.objects if o.scene == plan.relative]
     order_objects(doc, objects_here, editor.path, plan.edits)
@@ -180,8 +181,8 @@ def plan_scenes(
     ctx = SceneContext(manifest, code, rossharp, scripts, names, known, follow_renames, robots)
     named = _scene_locations(manifest)
     locations = dict(named)
-    for old in lock.components:
-        locations.setdefault(old.scene, SourceLocation(str(manifest.path)))
+    for scene in [c.scene for c in lock.components] + [r.scene for r in lock.robots]:
+        locations.setdefault(scene, SourceLocation(str(manifest.path)))
     plans = []
     for relative in sorted(locations):
         if relative not in named and not (manifest.project_root / relative).is_file():

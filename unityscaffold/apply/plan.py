@@ -183,6 +183,7 @@ def make_plan(
             for path, file_id in sorted(s.gameobjects.items())
         ),
         kept=frozenset(pruning.kept_files) | frozenset(pruning.kept_user_files),
+        robots=tuple(sorted(r for s in scenes for r in s.robots)),
     )
     check_inside(project, [d.path for d in desired] + deletions)
     # Beside the manifest, outside the project: the lock's and the journal's temporary files,

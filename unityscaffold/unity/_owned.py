@@ -3,7 +3,7 @@ rest kept."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 from unityscaffold.errors import UserError
 from unityscaffold.unity import _fields as F
@@ -17,12 +17,18 @@ from unityscaffold.unity._builders import (
 )
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS
 from unityscaffold.unity._documents import Documents
-from unityscaffold.unity._edits import _emit, _exemplar, set_fields
+from unityscaffold.unity._edits import (
+    _emit,
+    _exemplar,
+    remove_component,
+    remove_empty_gameobject,
+    set_fields,
+)
 from unityscaffold.unity._split import Doc
 from unityscaffold.unity.owned import OwnedComponent, OwnedDocument, OwnedObject
 from unityscaffold.unity.values import Verbatim
 
-__all__ = ["sync_owned"]
+__all__ = ["remove_owned", "sync_owned"]
 
 
 def sync_owned(
@@ -153,3 +159,23 @@ def _new(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> str:
     return new_monobehaviour(
         docs.era, exemplar, component.file_id, obj.file_id, component.script, lines
     )
+
+
+def remove_owned(docs: Documents, ids: Collection[int]) -> tuple[list[str], dict[int, str]]:
+    """Remove what an earlier run owned and this one no longer makes (``ids``): components and
+    documents first, then GameObjects, deepest first, each only when nothing else is on it
+    (another component, a child, a reference). Returns the paths of the GameObjects removed,
+    and those kept by fileID (the ids of every object kept, GameObject or not, are its keys)."""
+    hierarchy = docs.hierarchy
+    paths = {i: hierarchy.paths.get(i, f"&{i}") for i in ids}
+    for file_id in sorted(ids):
+        doc = docs.get(file_id)
+        if doc is not None and doc.class_id not in (1, 4):
+            remove_component(docs, file_id)
+    gameobjects = [i for i in ids if (doc := docs.get(i)) is not None and doc.class_id == 1]
+    removed = []
+    for file_id in sorted(gameobjects, key=lambda i: (-paths[i].count("/"), paths[i])):
+        if remove_empty_gameobject(docs, file_id):
+            removed.append(paths[file_id])
+    docs.invalidate()
+    return removed, {i: paths[i] for i in ids if i in docs}

@@ -9,7 +9,7 @@ GameObject + script, and fileIDs of new objects derive from stable names.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import cast
 
@@ -324,6 +324,11 @@ class SceneDocument:
         """Create or keep as declared objects known by their fileIDs (see ``unity.owned``);
         one line per object created or changed."""
         return _owned.sync_owned(self._docs, objects, documents)
+
+    def remove_owned(self, file_ids: Collection[int]) -> tuple[list[str], dict[int, str]]:
+        """Remove owned objects no longer made (see ``unity.owned``): the paths of the
+        GameObjects removed, and the objects kept (something else is on them) by fileID."""
+        return _owned.remove_owned(self._docs, file_ids)
 
     def place_siblings(self, parent: GameObject | None, wanted: Mapping[int, int]) -> bool:
         """Put GameObjects (fileID -> sibling index, 0 first) at their places among

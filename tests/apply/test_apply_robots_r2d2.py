@@ -1,0 +1,320 @@
+"""The acceptance test of `robots`: step 1 of ROS#'s "Gazebo Simulation Scenes ROS2" tutorial
+reproduced from a manifest.
+
+apply runs on the tutorial's start scene with a manifest holding r2d2 (from the URDF ROS#'s
+importer built the tutorial's robot from), the step's RosConnector and CompressedImageSubscriber,
+and what the tutorial's author set by hand after importing (the robot moved up, UrdfRobot's
+Is Kinematic, Use Gravity and Convex buttons). The result is compared with the COMPLETED scene
+Unity 2022.3 saved, every fileID and GUID named by what it points at (a GameObject by its path
+with sibling numbers, a component by its GameObject and class, an asset by its path): the tree,
+names, component order, every field of every component (floats bit for bit as float32,
+Transform positions within 1e-6, where Unity's world-space ``Translate`` rounds), and the inline
+cylinder Meshes text for text.
+
+What has not landed yet is excluded by name in ``PENDING``, each with the part of the scene it
+covers; the helper that lands one deletes its entry (and its stand-in in ``_manifest`` or
+``_urdf``), and the comparison then covers that part too.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import shutil
+import struct
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+from helpers import require, run_cli
+
+from unityscaffold.unity import SceneDocument
+from unityscaffold.unity.catalog import rossharp_catalog
+from unityscaffold.unity.index import GameObject
+from unityscaffold.unity.setvalue import component_label
+
+REPO = Path(__file__).resolve().parents[2]
+VENDOR = REPO.parent / "shared" / "vendor"
+STEP = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
+START = STEP / "Scenes" / "gazebo_simulation_scene_ROS2_1_Camera.unity"
+COMPLETED = STEP / "Scenes" / "Completed" / "gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
+ASSETS = STEP / "Urdf" / "file_server2"
+SCENE = "Assets/Scenes/gazebo_simulation_scene_ROS2_1_Camera.unity"
+
+Label = str
+#: Parts of the COMPLETED scene whose writer has not landed, by what they await: a predicate on
+#: a GameObject's label (its path with sibling numbers) that leaves it (and all under it) out.
+PENDING: dict[str, Callable[[Label], bool]] = {
+    # the <mesh> visuals and collisions (l_finger, l_finger_tip .dae models): the urdf-models
+    # work; until then _urdf gives those parts a box, and the parts are not compared
+    "mesh models": lambda label: label in _MESH_PARTS,
+    # the tutorial's CameraPlane under box (a Plane primitive with a MeshCollider): the
+    # objects-builtins work; the subscriber's meshRenderer points at it
+    "camera plane": lambda label: label.endswith("/CameraPlane[2]"),
+}
+#: Fields left out of the comparison, by (component class, field), with why.
+PENDING_FIELDS = {
+    ("CompressedImageSubscriber", "meshRenderer"): "the CameraPlane's renderer (camera plane)",
+}
+#: Fields of ROS# 2.2.1 that the sample scene, saved with an earlier ROS#, does not have.
+NEWER = {("CompressedImageSubscriber", "EnsureThreadSafety")}
+_MESH_PARTS: set[Label] = set()  # filled from the COMPLETED scene: the parts holding a model
+
+
+def _urdf() -> str:
+    """The tutorial's URDF; its <mesh> geometries as boxes until model instances are written."""
+    text = (STEP / "custom_r2d2.urdf").read_text(encoding="utf-8")
+    if "mesh models" in PENDING:
+        text = re.sub(r"<mesh filename=\"[^\"]*\"\s*/>", '<box size="0.1 0.1 0.1"/>', text)
+    return text
+
+
+def _manifest() -> str:
+    return f"""\
+version: 1
+ros: 2
+project: .
+scene: {SCENE}
+connector: {{gameobject: RosConnectorObject}}
+robots:
+  - urdf: ros/custom_r2d2.urdf
+    packages: {{urdf_tutorial: ros/urdf_tutorial}}
+    assets: Assets/Urdf/file_server2
+    position: [0, 0.47, 0]
+    kinematic: true
+    gravity: false
+    convex: true
+components:
+  - {{script: CompressedImageSubscriber, gameobject: RosConnectorObject,
+      fields: {{Topic: /camera/compressed}}}}
+objects:
+  - {{path: RosConnectorObject, sibling_index: 1}}
+  - {{path: World, position: [629.322, 333.3959, 2.613135]}}  # moved by the tutorial's author
+"""
+
+
+@pytest.fixture(scope="module")
+def scenes(tmp_path_factory: pytest.TempPathFactory) -> tuple[SceneDocument, SceneDocument]:
+    """(COMPLETED, ours) after apply on the start scene, each with its asset GUIDs named."""
+    require(START.is_file() and COMPLETED.is_file(), f"ROS#'s gazebo step-1 sample ({STEP})")
+    project = tmp_path_factory.mktemp("r2d2") / "p"
+    assert run_cli("init", str(project), "--ros", "2").code == 0
+    shutil.copy(START, project / SCENE)
+    (project / "ros").mkdir()
+    (project / "ros/custom_r2d2.urdf").write_text(_urdf(), encoding="utf-8")
+    shutil.copytree(ASSETS / "urdf_tutorial", project / "ros/urdf_tutorial")
+    (project / "robot.yaml").write_text(_manifest(), encoding="utf-8")
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 0, run.err
+    again = run_cli("apply", str(project / "robot.yaml"), "--check")
+    assert again.code == 0, again.out
+    _ASSET_NAMES.update(_guids(ASSETS, "Urdf/file_server2"))
+    _ASSET_NAMES.update(_guids(project / "Assets/Urdf/file_server2", "Urdf/file_server2"))
+    completed = SceneDocument.load(COMPLETED)
+    _MESH_PARTS.update(
+        _labels(completed)[go.transform_id or 0].rsplit("/Transform", 1)[0]
+        for _, go in completed.tree()
+        if go.is_prefab_instance and go.transform_id
+    )
+    _MESH_PARTS.update(_mesh_parts(completed))
+    return completed, SceneDocument.load(project / SCENE)
+
+
+_ASSET_NAMES: dict[str, str] = {}
+
+
+def _guids(folder: Path, named: str) -> dict[str, str]:
+    """GUID -> the asset's path under ``named``, from the ``.meta`` files in ``folder``."""
+    found = {}
+    for meta in folder.rglob("*.meta"):
+        match = re.search(r"^guid: ([0-9a-f]{32})$", meta.read_text(encoding="utf-8"), re.M)
+        if match:
+            found[match.group(1)] = f"{named}/{meta.relative_to(folder).as_posix()[:-5]}"
+    return found
+
+
+def _mesh_parts(scene: SceneDocument) -> set[Label]:
+    """The visual and collision objects whose child is a model instance."""
+    labels = _go_labels(scene)
+    parts = set()
+    for _, go in scene.tree():
+        if go.is_prefab_instance:
+            parent = scene.hierarchy.nodes[go.file_id].parent
+            if parent is not None:
+                parts.add(labels[parent])
+    return parts
+
+
+def _go_labels(scene: SceneDocument) -> dict[int, Label]:
+    """Each GameObject's path, with its number among its siblings below the scene's root
+    objects (roots are told by name: their order is the SceneRoots list, compared apart)."""
+    labels: dict[int, Label] = {}
+    for _, go in scene.tree():
+        parent = scene.hierarchy.nodes[go.file_id].parent
+        if parent is None:
+            labels[go.file_id] = go.name
+            continue
+        siblings = scene.hierarchy.nodes[parent].children
+        labels[go.file_id] = f"{labels[parent]}/{go.name}[{siblings.index(go.file_id)}]"
+    return labels
+
+
+def _labels(scene: SceneDocument) -> dict[int, Label]:
+    """Every GameObject, component and in-scene Mesh of ``scene`` by its label."""
+    names = rossharp_catalog().all_class_names()
+    labels = dict(_go_labels(scene))
+    for file_id, label in list(labels.items()):
+        go = scene.gameobject(file_id)
+        if go.is_prefab_instance:
+            continue
+        seen: dict[str, int] = {}
+        for comp in scene.components_of(go):
+            kind = component_label(comp, names)
+            n = seen[kind] = seen.get(kind, -1) + 1
+            labels[comp.file_id] = f"{label}/{kind}#{n}"
+            if comp.type_name == "MeshCollider":
+                mesh = scene.field(comp, "m_Mesh")
+                if isinstance(mesh, dict) and mesh.get("fileID", "0") != "0" and "guid" not in mesh:
+                    labels[int(mesh["fileID"])] = f"{label}/{kind}#{n}.m_Mesh"
+    return labels
+
+
+def _excluded(label: Label) -> bool:
+    return any(pending(part) for pending in PENDING.values() for part in _prefixes(label))
+
+
+def _prefixes(label: Label) -> list[Label]:
+    parts = label.split("/")
+    return ["/".join(parts[: i + 1]) for i in range(len(parts))]
+
+
+def _compared(scene: SceneDocument) -> list[GameObject]:
+    """The GameObjects the comparison covers: everything the step has that is not pending."""
+    labels = _go_labels(scene)
+    return [go for _, go in scene.tree() if not _excluded(labels[go.file_id])]
+
+
+def _named(value: object, labels: dict[int, Label]) -> object:
+    """A field value with every fileID and GUID replaced by what it names."""
+    if isinstance(value, dict):
+        if set(value) == {"fileID"}:
+            file_id = int(value["fileID"])
+            return "null" if file_id == 0 else labels.get(file_id, f"unknown &{file_id}")
+        if "guid" in value:
+            guid = str(value["guid"])
+            return f"{_ASSET_NAMES.get(guid, guid)}:{value.get('fileID')}"
+        return {k: _named(v, labels) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_named(v, labels) for v in value if not _excluded_reference(v, labels)]
+    return value
+
+
+def _excluded_reference(value: object, labels: dict[int, Label]) -> bool:
+    """A list item naming a pending object (the CameraPlane among box's children)."""
+    if isinstance(value, dict) and set(value) == {"fileID"}:
+        label = labels.get(int(value["fileID"]))
+        return label is not None and _excluded(label.rsplit("/Transform", 1)[0])
+    return False
+
+
+def _same(ours: object, theirs: object, *, tolerance: float = 0.0) -> bool:
+    """Equal, with numbers compared as the float32 Unity stores (bit for bit, the sign of a
+    zero included) or within ``tolerance``."""
+    if isinstance(theirs, dict) and isinstance(ours, dict):
+        return list(ours) == list(theirs) and all(
+            _same(ours[k], theirs[k], tolerance=tolerance) for k in theirs
+        )
+    if isinstance(theirs, list) and isinstance(ours, list):
+        return len(ours) == len(theirs) and all(
+            _same(a, b, tolerance=tolerance) for a, b in zip(ours, theirs, strict=True)
+        )
+    a, b = _number(ours), _number(theirs)
+    if a is None or b is None:
+        return ours == theirs
+    if tolerance:
+        return math.isclose(a, b, abs_tol=tolerance)
+    return struct.pack("<f", a) == struct.pack("<f", b) or (math.isnan(a) and math.isnan(b))
+
+
+def _number(value: object) -> float | None:
+    if not isinstance(value, str):
+        return None
+    try:
+        return float(value)
+    except ValueError:
+        return None
+
+
+def _fields(scene: SceneDocument, file_id: int) -> dict[str, object]:
+    doc = scene.document(file_id)
+    assert doc is not None
+    names = re.findall(r"^  ([A-Za-z_][\w ]*):", doc.text, re.M)
+    return {name: scene.field(file_id, name) for name in names}
+
+
+def test_the_tree_names_and_component_order_are_the_completed_scenes(
+    scenes: tuple[SceneDocument, SceneDocument],
+) -> None:
+    completed, ours = scenes
+    names = rossharp_catalog().all_class_names()
+
+    def tree(scene: SceneDocument) -> list[str]:
+        labels = _go_labels(scene)
+        return [
+            f"{labels[go.file_id]} {[component_label(c, names) for c in scene.components_of(go)]}"
+            for go in _compared(scene)
+        ]
+
+    theirs = tree(completed)
+    assert len(theirs) >= 90  # the robot's objects, World's and the connector's
+    assert tree(ours) == theirs
+
+
+def test_the_scene_roots_are_in_the_completed_scenes_order(
+    scenes: tuple[SceneDocument, SceneDocument],
+) -> None:
+    completed, ours = scenes
+    assert [go.name for go in ours.roots()] == [go.name for go in completed.roots()]
+
+
+def test_every_field_of_every_component_is_the_completed_scenes(
+    scenes: tuple[SceneDocument, SceneDocument],
+) -> None:
+    completed, ours = scenes
+    their_labels, our_labels = _labels(completed), _labels(ours)
+    mine = {label: file_id for file_id, label in our_labels.items()}
+    compared, different = 0, []
+    for go in _compared(completed):
+        for file_id in (go.file_id, *go.component_ids):
+            label = their_labels[file_id]
+            theirs, kind = _fields(completed, file_id), label.rsplit("/", 1)[-1].split("#")[0]
+            own = {k: v for k, v in _fields(ours, mine[label]).items() if (kind, k) not in NEWER}
+            assert list(own) == list(theirs), label
+            for name, value in theirs.items():
+                if (kind, name) in PENDING_FIELDS:
+                    continue
+                tolerance = 1e-6 if (kind, name) == ("Transform", "m_LocalPosition") else 0.0
+                a, b = _named(own[name], our_labels), _named(value, their_labels)
+                compared += 1
+                if not _same(a, b, tolerance=tolerance):
+                    different.append(f"{label}.{name}: ours {a!r}, Unity's {b!r}")
+    assert different == []
+    assert compared > 1000, compared
+
+
+def test_the_inline_cylinder_meshes_are_the_completed_scenes_text_for_text(
+    scenes: tuple[SceneDocument, SceneDocument],
+) -> None:
+    completed, ours = scenes
+
+    def meshes(scene: SceneDocument) -> dict[Label, str]:
+        labels = _labels(scene)
+        return {
+            labels[doc.file_id]: doc.text.split("\n", 1)[1]
+            for doc in scene.documents()
+            if doc.class_id == 43 and not _excluded(labels[doc.file_id])
+        }
+
+    theirs = meshes(completed)
+    assert len(theirs) == 6
+    assert meshes(ours) == theirs
