@@ -286,8 +286,8 @@ def _with_switches(
 
 
 def _refuse_unwritten(robot: PlannedRobot) -> None:
-    """Mesh geometry (the model seam, see the module's docstring) and joints that need a
-    ConfigurableJoint are not written yet: refused at their element."""
+    """Mesh geometry (the model seam, see the module's docstring) is not written yet: refused
+    at its element. (A joint that needs a ConfigurableJoint is refused by the import.)"""
     urdf = robot.imported.robot
     problems = []
     for _, obj in robot.imported.objects.walk():
@@ -297,16 +297,6 @@ def _refuse_unwritten(robot: PlannedRobot) -> None:
                     _element(urdf, obj.key),
                     "a <mesh> geometry is not written into scenes yet",
                     "use a box, cylinder or sphere for now",
-                )
-            )
-        if any(c.name == "ConfigurableJoint" for c in obj.components):
-            joint = next(j for j in urdf.joints if j.child == obj.name)
-            problems.append(
-                (
-                    joint.location,
-                    f"a {joint.type.value} joint needs a ConfigurableJoint, whose Unity 2022.3 "
-                    "layout is not checked yet",
-                    "use a fixed, revolute or continuous joint for now",
                 )
             )
     if problems:
