@@ -14,13 +14,20 @@ apply (writes everything), the no-op re-apply (plans, records), the next no-op (
 no-op with the record off and `apply --check`, each a whole process, with the cost per topic;
 the cost per topic should stay flat as N grows.
 
-Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...]
+Robots: `robots:` entries applied into a scene from clean (scene, lock and the robot's assets
+reset) and the no-op re-apply, as whole processes: ROS#'s r2d2 (the tutorial's URDF, read from
+../shared/vendor; its <mesh> geometries become boxes while the scene writer refuses meshes) and
+a generated robot of 500 links (bench_urdf's). Aims: r2d2 from clean under 1 s, its no-op
+within the sample's no-op aim.
+
+Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...] [--parts sample,robots,sweep]
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import re
 import resource
 import shutil
 import statistics
@@ -141,7 +148,9 @@ def main() -> None:
     parser.add_argument(
         "--sizes", type=int, nargs="*", default=[100, 500, 1000, 2000, 4000], help="topics"
     )
+    parser.add_argument("--parts", default="sample,robots,sweep")
     args = parser.parse_args()
+    parts = args.parts.split(",")
     with tempfile.TemporaryDirectory() as work:
         ENV.update(child_env(Path(work)))
         # `python -m` puts the current folder first on sys.path: run from inside another
@@ -149,8 +158,11 @@ def main() -> None:
         here = os.getcwd()
         os.chdir(work)
         print(f"load average before: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
-        sample(args.rounds, Path(work))
-        if args.sizes:
+        if "sample" in parts:
+            sample(args.rounds, Path(work))
+        if "robots" in parts:
+            robots(args.rounds, Path(work))
+        if args.sizes and "sweep" in parts:
             sweep(args.sizes)
         print(f"load average after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
         os.chdir(here)
@@ -180,6 +192,43 @@ def sample(rounds: int, work: Path) -> None:
     print(_line("no-op, no record", plain, "(UNITYSCAFFOLD_NO_REPLAY=1: plans)"))
     print(_line("import deps alone", deps, "(jinja2, ruamel.yaml, typer, yaml)"))
     print(_line("bare python start", bare, ""))
+
+
+R2D2 = REPO.parent / "shared/vendor/ros-sharp/samples/gazebo-ros2-step1"
+
+
+def robots(rounds: int, work: Path) -> None:
+    from bench_urdf import robot  # the generated robot of bench_urdf.py
+
+    r2d2 = (R2D2 / "custom_r2d2.urdf").read_text(encoding="utf-8")
+    r2d2 = re.sub(r'<mesh filename="[^"]*"\s*/>', '<box size="0.1 0.1 0.1"/>', r2d2)
+    cases = {"r2d2": r2d2, "500 links": robot(500).decode()}
+    print(f"robots, {rounds} rounds (r2d2's <mesh> geometries as boxes)")
+    for label, urdf in cases.items():
+        project = work / "robots" / label.replace(" ", "_")
+        subprocess.run(
+            [sys.executable, "-m", "unityscaffold", "init", "--ros", "2", str(project)],
+            check=True,
+            stdout=subprocess.DEVNULL,
+            env=ENV,
+        )
+        (project / "robot.urdf").write_text(urdf, encoding="utf-8")
+        manifest = project / "robot.yaml"
+        text = manifest.read_text(encoding="utf-8")
+        text = text.replace("\nrobots:\n", "\nrobots:\n  - urdf: robot.urdf\n", 1)
+        manifest.write_text(text, encoding="utf-8")
+        scene = project / "Assets/Scenes/Main.unity"
+        start = scene.read_bytes()
+        clean, noop = [], []
+        timed_apply(project)  # uncounted: compiles the bytecode and the templates
+        for _ in range(rounds):
+            scene.write_bytes(start)
+            (project / "robot.lock.json").unlink(missing_ok=True)
+            shutil.rmtree(project / "Assets/Urdf", ignore_errors=True)
+            clean.append(timed_apply(project))
+            noop.append(timed_apply(project, replay=False))
+        print(_line(f"{label} from clean", clean, "(aim < 1000 ms for r2d2)"))
+        print(_line(f"{label} no-op", noop, "(UNITYSCAFFOLD_NO_REPLAY=1: plans)"))
 
 
 if __name__ == "__main__":

@@ -270,3 +270,21 @@ def test_a_material_gone_from_the_urdf_is_pruned_with_its_meta(project: Path) ->
     assert not (project / "Assets/Urdf/bot/Materials/blue.mat").exists()
     assert not (project / "Assets/Urdf/bot/Materials/blue.mat.meta").exists()
     assert (project / "Assets/Urdf/bot/Materials/Default.mat").exists()
+
+
+def test_what_unity_recomputes_and_fields_the_import_leaves_alone_are_kept(
+    project: Path,
+) -> None:
+    """The connected anchor Unity computes when physics runs, and a drag the user set."""
+    assert _apply(project).code == 0
+    path = project / SCENE
+    text = path.read_text()
+    assert text.count("  m_ConnectedAnchor: {x: 0, y: 0, z: 0}\n") == 1
+    edited = text.replace(
+        "  m_ConnectedAnchor: {x: 0, y: 0, z: 0}\n",
+        "  m_ConnectedAnchor: {x: -0.01, y: 0.000000014901161, z: 0.19999999}\n",
+    ).replace("  m_Drag: 0\n", "  m_Drag: 0.5\n", 1)
+    path.write_text(edited)
+    assert _apply(project, "", "--check").code == 0
+    assert _apply(project).code == 0
+    assert path.read_text() == edited

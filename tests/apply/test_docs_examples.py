@@ -22,7 +22,14 @@ _FENCE = re.compile(r"(?ms)^```yaml\n(.*?)^```")
 # The starter's commented entries: "#  - {...}" items and their "#    key: ..." lines. Its
 # commented `interfaces:` folder is not an example: it names the user's own workspace.
 _ENTRY = re.compile(r"(?m)^#(  - |    \w)")
-_SECTIONS = ("connector", "topics", "services", "components", "objects")
+_SECTIONS = ("connector", "topics", "services", "components", "objects", "robots")
+# What a robot example's URDF stands for here: a robot of two links named after its file
+# (r2d2.urdf: "r2d2"), base_link and head, which the examples' components name.
+_URDF = (
+    '<robot name="{name}"><link name="base_link"><visual><geometry><box size="1 1 1"/>'
+    '</geometry></visual></link><link name="head"/><joint name="neck" type="fixed">'
+    '<parent link="base_link"/><child link="head"/></joint></robot>'
+)
 _HEADER = "version: 1\nros: 2\nscene: Assets/Scenes/Main.unity\n"
 
 
@@ -51,7 +58,19 @@ def _ros(manifest: str) -> str:
     return found.group(1)
 
 
+def _robot_files(project: Path, manifest: str) -> None:
+    """The URDF files and package folders the example's robots name, made up (see _URDF)."""
+    for urdf in re.findall(r"(?m)^  - urdf: (\S+)$", manifest):
+        path = project / urdf
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(_URDF.format(name=Path(urdf).stem), encoding="utf-8")
+    for packages in re.findall(r"(?m)^    packages: \{(.*)\}$", manifest):
+        for folder in re.findall(r": ([^,]+)", packages):
+            (project / folder.strip()).mkdir(parents=True, exist_ok=True)
+
+
 def _applies_and_settles(project: Path, manifest: str) -> None:
+    _robot_files(project, manifest)
     path = project / "robot.yaml"
     path.write_text(manifest, encoding="utf-8")
     first = run_cli("apply", str(path))

@@ -6,10 +6,17 @@ scene, known by fileIDs derived from the robot's GameObject path and each object
 enforced on every run; what the user added (components, children, fields the import leaves
 alone) is kept (``unity.owned``).
 
-The seam for model files: a visual or collision ``<mesh>`` becomes an object of role
-``Role.MODEL``, which ``_model_object`` turns into scene objects. Until the STL prefabs and DAE
-model instances are written there, a URDF with a mesh geometry is a located error at the
-``<mesh>`` element, never a robot with holes in it.
+The seam for model files: a visual's or collision's ``<mesh>`` is an object of role
+``Role.MODEL`` (key ``link[i]/visual[j]/shape``), which is no GameObject of the scene's own but
+an instance of a model or prefab: ``_Writer._model`` is to add its documents (the
+``ModelInstance`` in ``RobotImport.models[key]``, laid out by
+``unity.prefabinstance.instance_documents``, each an ``OwnedDocument`` whose fileID comes from
+``self.file_id(key, role, class_id)`` per ``scene_roles()``) and return the fileID of its root's
+stripped Transform, which its parent lists among its children; ``sync_owned`` writes such
+documents whole and ``remove_owned`` removes them when the URDF drops the mesh. Its asset files
+(``RobotImport.model_assets``) go with the others in ``_robot_plan``. Until that is written,
+``_refuse_unwritten`` stops a URDF with a mesh geometry with a located error at the ``<mesh>``
+element: never a robot with holes in it.
 """
 
 from __future__ import annotations
@@ -152,13 +159,27 @@ class _Writer:
         """Every object, parents first; every fileID is picked before any field refers to one."""
         walked = [o for _, o in root.walk()]
         for obj in walked:
+            if obj.role is Role.MODEL:
+                continue  # named by _model, once its parent's Transform is known
             self.file_id(obj.key, "GameObject", 1)
             self.file_id(obj.key, "Transform", 4)
             for component, role in _roles(obj.components):
                 self.file_id(obj.key, role, _class_id(component))
         parents = {c.key: self.ids[(o.key, "Transform")] for o in walked for c in o.children}
+        for obj in walked:
+            if obj.role is Role.MODEL:
+                self.ids[(obj.key, "Transform")] = self._model(obj, parents[obj.key])
         paths = dict(_paths(root, self.robot.gameobject))
-        return [self._object(obj, parents.get(obj.key, parent), paths[obj.key]) for obj in walked]
+        return [
+            self._object(obj, parents.get(obj.key, parent), paths[obj.key])
+            for obj in walked
+            if obj.role is not Role.MODEL
+        ]
+
+    def _model(self, obj: ImportedObject, parent: int) -> int:
+        """The seam for model files (see the module's docstring): the instance's documents
+        added to ``documents``, and the fileID of its root's stripped Transform returned."""
+        raise AssertionError(f"{obj.key}: mesh geometry is refused before it is written")
 
     def _object(self, obj: ImportedObject, parent: int, path: str) -> OwnedObject:
         components = tuple(

@@ -65,7 +65,8 @@ def sync_owned(
 def _document(docs: Documents, item: OwnedDocument, said: list[str]) -> None:
     doc = docs.get(item.file_id)
     if doc is None:
-        docs.insert(Doc(item.class_id, item.file_id, False, item.text))
+        stripped = item.text[: item.text.index("\n")].endswith(" stripped")
+        docs.insert(Doc(item.class_id, item.file_id, stripped, item.text))
         said.append(f"create {_label(item)}")
     elif doc.text != item.text:
         T.set_text(doc, item.text)
@@ -161,6 +162,19 @@ def _new(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> str:
     )
 
 
+_PREFAB_INSTANCE = 1001
+
+
+def _remove_instance_part(docs: Documents, doc: Doc) -> None:
+    """A model instance's document (the PrefabInstance or a stripped object of its source);
+    a stripped Transform leaves its parent's children too."""
+    if doc.class_id == 4:
+        for father in docs.in_order:
+            if father.class_id == 4 and T.remove_list_item(father, "m_Children", doc.file_id):
+                docs.touch(father)
+    docs.remove(doc)
+
+
 def remove_owned(docs: Documents, ids: Collection[int]) -> tuple[list[str], dict[int, str]]:
     """Remove what an earlier run owned and this one no longer makes (``ids``): components and
     documents first, then GameObjects, deepest first, each only when nothing else is on it
@@ -170,7 +184,9 @@ def remove_owned(docs: Documents, ids: Collection[int]) -> tuple[list[str], dict
     paths = {i: hierarchy.paths.get(i, f"&{i}") for i in ids}
     for file_id in sorted(ids):
         doc = docs.get(file_id)
-        if doc is not None and doc.class_id not in (1, 4):
+        if doc is not None and (doc.stripped or doc.class_id == _PREFAB_INSTANCE):
+            _remove_instance_part(docs, doc)
+        elif doc is not None and doc.class_id not in (1, 4):
             remove_component(docs, file_id)
     gameobjects = [i for i in ids if (doc := docs.get(i)) is not None and doc.class_id == 1]
     removed = []
