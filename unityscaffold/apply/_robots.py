@@ -21,6 +21,7 @@ element: never a robot with holes in it.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -254,9 +255,16 @@ class _Writer:
     def _cylinder(self, obj: ImportedObject) -> int:
         file_id = self.file_id(obj.key, "Mesh", 43)
         if not any(d.file_id == file_id for d in self.documents):
-            text = mesh_document(file_id, "", cylinder_collider_mesh(), keep=True)
+            text = f"--- !u!43 &{file_id}\n{_cylinder_body()}"
             self.documents.append(OwnedDocument(43, file_id, text))
         return file_id
+
+
+@functools.cache
+def _cylinder_body() -> str:
+    """The cylinder collider Mesh's document after its header line: the same for every
+    collider (computing it costs some 100,000 float32 roundings)."""
+    return mesh_document(0, "", cylinder_collider_mesh(), keep=True).split("\n", 1)[1]
 
 
 def _roles(components: Sequence[ImportedComponent]) -> Iterator[tuple[ImportedComponent, str]]:
