@@ -65,19 +65,19 @@ ROBOT = Section(
         Key(
             "kinematic",
             "UrdfRobot's *Is Kinematic*: every link's Rigidbody `m_IsKinematic`. "
-            "Default: as imported (not kinematic).",
+            "Left out: not enforced (a new robot is imported not kinematic).",
             BOOL,
         ),
         Key(
             "gravity",
             "UrdfRobot's *Use Gravity*: every link's Rigidbody `m_UseGravity`. "
-            "Default: as imported (on).",
+            "Left out: not enforced (a new robot is imported with gravity).",
             BOOL,
         ),
         Key(
             "convex",
             "UrdfRobot's *Convex*: every collision MeshCollider's `m_Convex`. "
-            "Default: as imported (cylinders convex).",
+            "Left out: as the importer makes them (a cylinder's collider is convex).",
             BOOL,
         ),
         Key(
