@@ -196,7 +196,11 @@ def test_a_prismatic_joint_is_refused_at_its_joint(project: Path) -> None:
 @pytest.mark.parametrize(
     ("entry", "message"),
     [
-        ("  - urdf: ros/missing.urdf\n", "robot.yaml:6:11: error: URDF file ros/missing.urdf"),
+        ("  - urdf: ros/missing.urdf\n", "robot.yaml:6:11: error: URDF file "),
+        (
+            "  - urdf: ros/bot.urdf\n    packages: {p: ros/none}\n",
+            "robot.yaml:7:15: error: the folder of package p",
+        ),
         ("  - urdf: ros/bot.urdf\n    kinematik: true\n", "unknown key 'kinematik' in robot"),
         ("  - urdf: ros/bot.xacro\n", "invalid value for 'urdf'"),
         ("  - urdf: ros/bot.urdf\n    assets: Packages/x\n", "invalid value for 'assets'"),

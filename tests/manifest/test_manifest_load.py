@@ -213,6 +213,7 @@ def test_starter_manifest_examples_are_valid_once_uncommented(ros: int) -> None:
     # ROS 2's standard interfaces define no action: its example is the built-in Fibonacci
     expected = "MoveBaseActionClient" if ros == 1 else "FibonacciActionClient"
     assert [a.class_name for a in m.actions] == [expected]
+    assert [r.urdf for r in m.robots] == [Path("/p/ros/my_robot.urdf")]
 
 
 def test_starter_manifest_rejects_bad_arguments() -> None:

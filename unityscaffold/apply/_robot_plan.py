@@ -10,7 +10,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
-from unityscaffold.errors import located_at
+from unityscaffold.errors import LocatedError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.manifest.model import Manifest
 from unityscaffold.manifest.robot_entry import RobotEntry
@@ -43,7 +43,26 @@ def plan_robots(manifest: Manifest, salt: str) -> list[PlannedRobot]:
     return [_plan(manifest, entry, salt) for entry in manifest.robots]
 
 
+def _check_inputs(entry: RobotEntry) -> None:
+    """The URDF and the package folders the entry names exist."""
+    if not entry.urdf.is_file():
+        raise LocatedError.at(
+            entry.locations.of("urdf"),
+            f"URDF file {entry.urdf} not found",
+            expected="a .urdf file, relative to the manifest",
+            hint="the path is relative to the manifest's folder",
+        )
+    for name, folder in entry.packages:
+        if not folder.is_dir():
+            raise LocatedError.at(
+                entry.locations.of("packages"),
+                f"the folder of package {name}, {folder}, does not exist",
+                hint="package folders are relative to the manifest's folder",
+            )
+
+
 def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
+    _check_inputs(entry)
     root = manifest.project_root
     with located_at(entry.locations.of("urdf")):
         imported = import_robot(

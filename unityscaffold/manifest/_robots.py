@@ -66,16 +66,7 @@ def _urdf(r: Reader, m: YMap, base: Path) -> Path | None:
     if "\\" in value:
         r.invalid(entry, EXPECT_URDF, hint="write '/' between folders")
         return None
-    path = base / value
-    if not path.is_file():
-        r.error(
-            entry.value.location,
-            f"URDF file {value} not found (looked in {base})",
-            expected=EXPECT_URDF,
-            hint="the path is relative to the manifest's folder",
-        )
-        return None
-    return path
+    return base / value  # that it exists is apply's to check, as for `interfaces`
 
 
 def _packages(r: Reader, m: YMap, base: Path) -> tuple[tuple[str, Path], ...]:
@@ -101,9 +92,6 @@ def _packages(r: Reader, m: YMap, base: Path) -> tuple[tuple[str, Path], ...]:
         folder = folder_path(
             r, YEntry(item.key, item.key_location, item.value), value, base, allow_absolute=True
         )
-        if folder is not None and not folder.is_dir():
-            r.invalid(item, "an existing folder", hint=f"{folder} is not a folder")
-            continue
         if folder is not None:
             found.append((item.key, folder))
     return tuple(found)
