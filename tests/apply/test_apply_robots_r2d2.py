@@ -3,13 +3,13 @@ reproduced from a manifest.
 
 apply runs on the tutorial's start scene with a manifest holding r2d2 (from the URDF ROS#'s
 importer built the tutorial's robot from), the step's RosConnector and CompressedImageSubscriber,
-and what the tutorial's author set by hand after importing (the robot moved up, UrdfRobot's
-Is Kinematic, Use Gravity and Convex buttons). The result is compared with the COMPLETED scene
+and what the tutorial's author did by hand after importing (the robot moved up, UrdfRobot's
+Is Kinematic, Use Gravity and Convex buttons, World moved, a CameraPlane added under the robot's
+head for the subscriber's images). The result is compared with the COMPLETED scene
 Unity 2022.3 saved, every fileID and GUID named by what it points at (a GameObject by its path
 with sibling numbers, a component by its GameObject and class, an asset by its path): the tree,
 names, component order, every field of every component (floats bit for bit as float32,
-Transform positions within 1e-6, where Unity's world-space ``Translate`` rounds), and the inline
-cylinder Meshes text for text.
+Transform positions and rotations within 1e-6), and the inline cylinder Meshes text for text.
 
 What has not landed yet is excluded by name in ``PENDING``, each with the part of the scene it
 covers; the helper that lands one deletes its entry (and its stand-in in ``_manifest`` or
@@ -48,14 +48,9 @@ PENDING: dict[str, Callable[[Label], bool]] = {
     # the <mesh> visuals and collisions (l_finger, l_finger_tip .dae models): the urdf-models
     # work; until then _urdf gives those parts a box, and the parts are not compared
     "mesh models": lambda label: label in _MESH_PARTS,
-    # the tutorial's CameraPlane under box (a Plane primitive with a MeshCollider): the
-    # objects-builtins work; the subscriber's meshRenderer points at it
-    "camera plane": lambda label: label.endswith("/CameraPlane[2]"),
 }
 #: Fields left out of the comparison, by (component class, field), with why.
-PENDING_FIELDS = {
-    ("CompressedImageSubscriber", "meshRenderer"): "the CameraPlane's renderer (camera plane)",
-}
+PENDING_FIELDS: dict[tuple[str, str], str] = {}
 #: Fields of ROS# 2.2.1 that the sample scene, saved with an earlier ROS#, does not have.
 NEWER = {("CompressedImageSubscriber", "EnsureThreadSafety")}
 _MESH_PARTS: set[Label] = set()  # filled from the COMPLETED scene: the parts holding a model
@@ -85,11 +80,23 @@ robots:
     gravity: false
     convex: true
 components:
-  - {{script: CompressedImageSubscriber, gameobject: RosConnectorObject,
-      fields: {{Topic: /camera/compressed}}}}
+  - script: CompressedImageSubscriber
+    gameobject: RosConnectorObject
+    fields:
+      Topic: /camera/compressed
+      meshRenderer: "@r2d2/base_link/head/box/CameraPlane:MeshRenderer"
 objects:
   - {{path: RosConnectorObject, sibling_index: 1}}
   - {{path: World, position: [629.322, 333.3959, 2.613135]}}  # moved by the tutorial's author
+  # the screen the subscriber shows the camera's images on
+  - path: r2d2/base_link/head/box/CameraPlane
+    primitive: plane
+    position: [0, 0.6, 2.26]
+    rotation: [90, 180, 0]
+    scale: [0.37296003, 1, 0.29999998]
+    components:
+      - {{type: MeshRenderer, fields: {{m_CastShadows: 0}}}}
+      - {{type: MeshCollider, fields: {{m_Convex: true}}}}  # UrdfRobot's Convex button
 """
 
 
@@ -252,6 +259,11 @@ def _fields(scene: SceneDocument, file_id: int) -> dict[str, object]:
     return {name: scene.field(file_id, name) for name in names}
 
 
+#: Compared within 1e-6: Unity's world-space ``Translate`` (the importer's positions) and its
+#: float32 Euler angles (the CameraPlane's rotation, set in the Inspector) round differently.
+_NEAR = {("Transform", "m_LocalPosition"), ("Transform", "m_LocalRotation")}
+
+
 def test_the_tree_names_and_component_order_are_the_completed_scenes(
     scenes: tuple[SceneDocument, SceneDocument],
 ) -> None:
@@ -293,7 +305,7 @@ def test_every_field_of_every_component_is_the_completed_scenes(
             for name, value in theirs.items():
                 if (kind, name) in PENDING_FIELDS:
                     continue
-                tolerance = 1e-6 if (kind, name) == ("Transform", "m_LocalPosition") else 0.0
+                tolerance = 1e-6 if (kind, name) in _NEAR else 0.0
                 a, b = _named(own[name], our_labels), _named(value, their_labels)
                 compared += 1
                 if not _same(a, b, tolerance=tolerance):

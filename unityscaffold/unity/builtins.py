@@ -262,8 +262,8 @@ _CONNECTED = (
     _Field("m_ConnectedArticulationBody", "asset", "{fileID: 0}"),
 )
 
-#: Classes the URDF import writes that a manifest cannot declare (yet): the same 2022.3
-#: layouts, read off the scene Unity saved after ROS#'s importer built r2d2.
+#: Classes the URDF import writes that a manifest cannot declare (yet): their 2022.3 layouts,
+#: read off the scene Unity saved after ROS#'s importer built r2d2.
 _IMPORTED_LAYOUTS: dict[str, tuple[int, tuple[_Field, ...]]] = {
     "FixedJoint": (138, (*_CONNECTED, *_JOINT_TAIL)),
     "HingeJoint": (
@@ -289,58 +289,6 @@ _IMPORTED_LAYOUTS: dict[str, tuple[int, tuple[_Field, ...]]] = {
                 "\n    contactDistance: 0",
             ),
             *_JOINT_TAIL,
-        ),
-    ),
-    "MeshCollider": (
-        64,
-        _collider(
-            _Field("m_Convex", "bool", "0"),
-            _Field("m_CookingOptions", "int", "30"),
-            _Field("m_Mesh", "asset", "{fileID: 0}"),
-            version="5",
-        ),
-    ),
-    "MeshFilter": (33, (_Field("m_Mesh", "asset", "{fileID: 0}"),)),
-    "MeshRenderer": (
-        23,
-        (
-            _Field("m_Enabled", "bool", "1"),
-            _Field("m_CastShadows", "int", "1"),
-            _Field("m_ReceiveShadows", "bool", "1"),
-            _Field("m_DynamicOccludee", "bool", "1"),
-            _Field("m_StaticShadowCaster", "bool", "0"),
-            _Field("m_MotionVectors", "int", "1"),
-            _Field("m_LightProbeUsage", "int", "1"),
-            _Field("m_ReflectionProbeUsage", "int", "1"),
-            _Field("m_RayTracingMode", "int", "2"),
-            _Field("m_RayTraceProcedural", "bool", "0"),
-            _Field("m_RenderingLayerMask", "int", "1"),
-            _Field("m_RendererPriority", "int", "0"),
-            # what CreatePrimitive's renderer has: Unity's Default-Material
-            _Field(
-                "m_Materials",
-                "block",
-                "\n  - {fileID: 10303, guid: 0000000000000000f000000000000000, type: 0}",
-            ),
-            _Field("m_StaticBatchInfo", "block", "\n    firstSubMesh: 0\n    subMeshCount: 0"),
-            _Field("m_StaticBatchRoot", "asset", "{fileID: 0}"),
-            _Field("m_ProbeAnchor", "asset", "{fileID: 0}"),
-            _Field("m_LightProbeVolumeOverride", "asset", "{fileID: 0}"),
-            _Field("m_ScaleInLightmap", "float", "1"),
-            _Field("m_ReceiveGI", "int", "1"),
-            _Field("m_PreserveUVs", "bool", "1"),
-            _Field("m_IgnoreNormalsForChartDetection", "bool", "0"),
-            _Field("m_ImportantGI", "bool", "0"),
-            _Field("m_StitchLightmapSeams", "bool", "1"),
-            _Field("m_SelectedEditorRenderState", "int", "3"),
-            _Field("m_MinimumChartSize", "int", "4"),
-            _Field("m_AutoUVMaxDistance", "float", "0.5"),
-            _Field("m_AutoUVMaxAngle", "float", "89"),
-            _Field("m_LightmapParameters", "asset", "{fileID: 0}"),
-            _Field("m_SortingLayerID", "int", "0"),
-            _Field("m_SortingLayer", "int", "0"),
-            _Field("m_SortingOrder", "int", "0"),
-            _Field("m_AdditionalVertexStreams", "asset", "{fileID: 0}"),
         ),
     ),
 }

@@ -284,7 +284,9 @@ def geometry_components(
         )
         return [
             ImportedComponent("MeshFilter", (("m_Mesh", mesh),)),
-            ImportedComponent("MeshRenderer", (("m_Materials", [chosen]),)),
+            # CreatePrimitive called from an editor script leaves the renderer's UVs preserved
+            # (the GameObject menu's primitives have 0)
+            ImportedComponent("MeshRenderer", (("m_Materials", [chosen]), ("m_PreserveUVs", True))),
         ]
     if isinstance(geometry, Cylinder):
         return [ImportedComponent("MeshCollider", (("m_Convex", True), ("m_Mesh", CYLINDER_MESH)))]
