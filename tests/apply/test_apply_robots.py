@@ -204,6 +204,14 @@ def test_a_prismatic_joint_is_refused_at_its_joint(project: Path) -> None:
         ("  - urdf: ros/bot.urdf\n    kinematik: true\n", "unknown key 'kinematik' in robot"),
         ("  - urdf: ros/bot.xacro\n", "invalid value for 'urdf'"),
         ("  - urdf: ros/bot.urdf\n    assets: Packages/x\n", "invalid value for 'assets'"),
+        (
+            "  - urdf: ros/bot.urdf\n  - urdf: ros/bot.urdf\n",
+            "robot.yaml:7:5: error: a second robot at GameObject 'bot' in Assets/Scenes/Main.unity",
+        ),
+        (
+            "  - {urdf: ros/bot.urdf, gameobject: R}\n  - {urdf: ros/bot.urdf, gameobject: R}\n",
+            "robot.yaml:7:38: error: a second robot at GameObject 'R'",
+        ),
     ],
 )
 def test_a_bad_robot_entry_is_a_located_error(project: Path, entry: str, message: str) -> None:

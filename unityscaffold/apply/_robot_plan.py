@@ -40,7 +40,26 @@ class PlannedRobot:
 
 
 def plan_robots(manifest: Manifest, salt: str) -> list[PlannedRobot]:
-    return [_plan(manifest, entry, salt) for entry in manifest.robots]
+    planned = [_plan(manifest, entry, salt) for entry in manifest.robots]
+    _refuse_shared_gameobjects(planned)
+    return planned
+
+
+def _refuse_shared_gameobjects(planned: Iterable[PlannedRobot]) -> None:
+    """Two robots at one GameObject would each rebuild it as its own on every apply (and
+    ``--check`` would pass while both report updates); only the URDF knows the default name,
+    so the manifest reader cannot see this."""
+    first: dict[tuple[str, str], PlannedRobot] = {}
+    for robot in planned:
+        key = (robot.entry.scene, robot.gameobject)
+        other = first.setdefault(key, robot)
+        if other is not robot:
+            raise LocatedError.at(
+                robot.entry.locations.of("gameobject"),
+                f"a second robot at GameObject '{robot.gameobject}' in {robot.entry.scene}",
+                hint=f"the robot on line {other.entry.locations.item.line} is there already; "
+                "give each robot its own `gameobject`",
+            )
 
 
 def _check_inputs(entry: RobotEntry) -> None:
