@@ -4,6 +4,7 @@ written yet at its element (comparison with Unity's own r2d2: test_apply_robots_
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
@@ -300,3 +301,32 @@ def test_what_unity_recomputes_and_fields_the_import_leaves_alone_are_kept(
     assert _apply(project, "", "--check").code == 0
     assert _apply(project).code == 0
     assert path.read_text() == edited
+
+
+def test_an_import_from_clean_gives_the_same_bytes_again(project: Path) -> None:
+    """fileIDs and GUIDs derive from names: a robot imported anew is the robot imported
+    before, scene and assets byte for byte."""
+    scene = (project / SCENE).read_bytes()
+    assert _apply(project).code == 0
+    first = snapshot(project)
+    (project / SCENE).write_bytes(scene)
+    (project / "robot.lock.json").unlink()
+    shutil.rmtree(project / "Assets/Urdf")
+    (project / "Assets/Urdf.meta").unlink()
+    assert _apply(project).code == 0
+    assert snapshot(project) == first
+
+
+def test_a_robot_goes_under_the_parent_its_path_names(project: Path) -> None:
+    run = _apply(project, "    gameobject: World/bot\n")
+    assert run.code == 0, run.err
+    listed = run_cli("scene", "ls", str(project / SCENE)).out.splitlines()
+    assert "World  [Transform]" in listed
+    assert "  bot  [Transform, UrdfRobot]" in listed
+    assert (
+        "      arm  [Transform, UrdfLink, Rigidbody, UrdfInertial, UrdfJointRevolute, "
+        "HingeJoint, HingeJointLimitsManager, HingeJointAngleCalculator]" in listed
+    )
+    before = snapshot(project)
+    assert _apply(project, "    gameobject: World/bot\n").code == 0
+    assert snapshot(project) == before

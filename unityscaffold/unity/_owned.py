@@ -128,6 +128,14 @@ def _father(docs: Documents, obj: OwnedObject, tr: Doc) -> None:
         T.replace_field(tr, "m_Father", [f"  m_Father: {{fileID: {obj.parent}}}"])
         docs.touch(tr)
     if obj.parent:
+        # an owned parent lists its owned children itself; another one (the robot's root
+        # under the user's object) gets it appended
+        father = docs.require(obj.parent)
+        if obj.transform_id not in F.list_refs(father, "m_Children"):
+            if F.field_span(father, "m_Children") is None:
+                T.insert_field(father, ["  m_Children: []"], before="m_Father")
+            T.append_list_item(father, "m_Children", f"  - {{fileID: {obj.transform_id}}}")
+            docs.touch(father)
         return
     roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
     if obj.transform_id not in F.list_refs(roots, "m_Roots"):
