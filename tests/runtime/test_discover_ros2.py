@@ -26,7 +26,7 @@ from unityscaffold.interfaces.registry import Registry
 REPO = Path(__file__).resolve().parents[2]
 NODE = Path(__file__).parent / "data" / "ros2" / "robot_node.py"
 SAMPLE = REPO / "sample_project" / "ros2_ws" / "src" / "diffbot_msgs"
-ROBOT = "^/(odom|base_status|cmd_vel|trigger|set_speed_limit|dock|charger/dock)$"
+ROBOT = "^/(odom|base_status|cmd_vel|trigger|set_speed_limit|hmi/confirm|dock|charger/dock)$"
 
 # ``scaffold`` under the stack's Python (which has rclpy), this checkout first on the path and
 # the tests' own packages (typer, jinja2, ...) last, so the stack's own copies win.
@@ -113,7 +113,7 @@ def _unity_view(offers: dict[str, Any]) -> dict[str, list[tuple[str, str, str | 
     role = {"server": "client", "client": "server"}
     return {
         "topics": sorted((n, t, direction[d]) for n, (t, d) in offers["topics"].items()),
-        "services": sorted((n, t, "") for n, t in offers["services"].items()),
+        "services": sorted((n, t, role[r]) for n, (t, r) in offers["services"].items()),
         "actions": sorted((n, t, role[r]) for n, (t, r) in offers["actions"].items()),
     }
 
@@ -121,7 +121,7 @@ def _unity_view(offers: dict[str, Any]) -> dict[str, list[tuple[str, str, str | 
 def _found_view(found: dict[str, Any]) -> dict[str, list[tuple[str, str, str | None]]]:
     return {
         "topics": sorted((t["name"], t["type"], t["direction"]) for t in found["topics"]),
-        "services": sorted((s["name"], s["type"], "") for s in found["services"]),
+        "services": sorted((s["name"], s["type"], s["role"]) for s in found["services"]),
         "actions": sorted((a["name"], a["type"], a["role"]) for a in found["actions"]),
     }
 
@@ -169,6 +169,7 @@ def test_discover_ros2_finds_what_the_node_offers_and_apply_needs_no_ros(
         assert path.read_bytes() == (SAMPLE / path.relative_to(cache / "diffbot_msgs")).read_bytes()
     text = manifest.read_text()
     assert "- {name: /base_status, type: diffbot_msgs/msg/BaseStatus, direction: subscribe" in text
+    assert "- {name: /hmi/confirm, type: std_srvs/srv/Trigger, role: server" in text
     assert "- {name: /dock, type: diffbot_msgs/action/Dock, role: client" in text
     assert "- {name: /charger/dock, type: diffbot_msgs/action/Dock, role: server" in text
     # apply, here without ROS 2 or diffbot_msgs, generates everything from the cache

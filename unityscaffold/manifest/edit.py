@@ -181,7 +181,7 @@ def _service_pairs(service: DiscoveredService) -> list[tuple[str, str]]:
     return [
         ("name", service.name),
         ("type", service.type),
-        ("role", "client"),
+        ("role", service.role),
         ("gameobject", DEFAULT_GAMEOBJECT),
     ]
 

@@ -144,7 +144,10 @@ def _services(
             continue
         kind = _one_type(name, types, warnings)
         hashes.update({(name, half): h for half, h in _halves(snapshot, name, kind).items()})
-        services.append(DiscoveredService(name, kind))
+        # a server reads the requests; a graph with callers only wants Unity to serve it
+        requests = snapshot.endpoints.get(f"rq{name}Request", [])
+        served = any(not e.publishes for e in requests) or not requests
+        services.append(DiscoveredService(name, kind, role="client" if served else "server"))
     return services
 
 

@@ -82,7 +82,7 @@ def discover_rosbridge(
                 progress(done, total, name)
         services = []
         for done, name in enumerate(service_names, start=len(chosen) + 1):
-            services.append(_service(client, name))
+            services.append(_service(client, name, found_dialect))
             if progress is not None:
                 progress(done, total, name)
         actions: list[DiscoveredAction] = []
@@ -140,9 +140,16 @@ def _nodes(client: RosbridgeClient, which: str, topic: str) -> list[str]:
     return strings(client, client.call(service, {"topic": topic}), which, service)
 
 
-def _service(client: RosbridgeClient, name: str) -> DiscoveredService:
+def _service(client: RosbridgeClient, name: str, dialect: Dialect) -> DiscoveredService:
     service = "/rosapi/service_type"
     kind = client.call(service, {"service": name}).get("type")
     if not isinstance(kind, str):
         raise client.malformed(service, "type is not a string")
-    return DiscoveredService(name, kind)
+    if dialect is Dialect.ROS1 or not kind:
+        return DiscoveredService(name, kind)
+    # ROS 2 lists services that only have callers too; rosapi names a server's node only
+    service = "/rosapi/service_node"
+    node = client.call(service, {"service": name}).get("node")
+    if not isinstance(node, str):
+        raise client.malformed(service, "node is not a string")
+    return DiscoveredService(name, kind, role="client" if node else "server")

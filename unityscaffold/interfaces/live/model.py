@@ -89,17 +89,21 @@ class DiscoveredTopic:
 
 @dataclass(frozen=True, slots=True)
 class DiscoveredService:
-    """A service; ROS 1 nodes report the md5 but never the ``.srv`` text."""
+    """A service; ROS 1 nodes report the md5 but never the ``.srv`` text. ``role`` is Unity's:
+    ``client`` when the system serves it, ``server`` when the system only calls it (a ROS 2
+    graph shows callers too)."""
 
     name: str
     type: str
     md5: str | None = None
     definition: str | None = None
+    role: str = "client"
 
     def to_json(self) -> dict[str, Any]:
         return {
             "name": self.name,
             "type": self.type,
+            "role": self.role,
             "md5sum": self.md5,
             "definition": self.definition,
         }

@@ -2,10 +2,11 @@
 
 Publishes /odom (nav_msgs/msg/Odometry) and /base_status (the sample's diffbot_msgs/msg/
 BaseStatus), subscribes to /cmd_vel (geometry_msgs/msg/Twist), serves /trigger (std_srvs/srv/
-Trigger) and /set_speed_limit (diffbot_msgs/srv/SetSpeedLimit), serves the action /dock
-(diffbot_msgs/action/Dock) and is only a client of /charger/dock. Prints what it offers as one
-JSON line ({"topics": {name: [type, "publishes" | "subscribes"]}, "services": {name: type},
-"actions": {name: [type, "server" | "client"]}}), then "ready"; runs until stdin closes.
+Trigger) and /set_speed_limit (diffbot_msgs/srv/SetSpeedLimit) and only calls /hmi/confirm
+(std_srvs/srv/Trigger), serves the action /dock (diffbot_msgs/action/Dock) and is only a client
+of /charger/dock. Prints what it offers as one JSON line ({"topics": {name: [type, "publishes" |
+"subscribes"]}, "services" and "actions": {name: [type, "server" | "client"]}}), then "ready";
+runs until stdin closes.
 """
 
 import json
@@ -34,7 +35,9 @@ def main():
     offers["topics"]["/cmd_vel"] = [_type(Twist, "msg"), "subscribes"]
     for name, cls in (("/trigger", Trigger), ("/set_speed_limit", SetSpeedLimit)):
         node.create_service(cls, name, lambda request, response: response)
-        offers["services"][name] = _type(cls, "srv")
+        offers["services"][name] = [_type(cls, "srv"), "server"]
+    node.create_client(Trigger, "/hmi/confirm")
+    offers["services"]["/hmi/confirm"] = [_type(Trigger, "srv"), "client"]
     ActionServer(node, Dock, "/dock", lambda goal: Dock.Result())
     offers["actions"]["/dock"] = [_type(Dock, "action"), "server"]
     ActionClient(node, Dock, "/charger/dock")
