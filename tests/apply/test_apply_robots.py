@@ -223,6 +223,31 @@ def test_a_bad_robot_entry_is_a_located_error(project: Path, entry: str, message
     assert snapshot(project) == before
 
 
+@pytest.mark.parametrize(
+    ("name", "message"),
+    [
+        ("..", "the robot's name '..' is not usable as a folder name under Assets/Urdf"),
+        ("", "the robot's name '' is not usable as a GameObject name or a folder name"),
+        (
+            "arm/left",
+            "the robot's name 'arm/left' is not usable as a GameObject name or a folder name",
+        ),
+    ],
+)
+def test_a_robot_name_that_cannot_be_its_gameobject_or_folder_is_a_located_error(
+    project: Path, name: str, message: str
+) -> None:
+    build_tree(project, {"ros/bot.urdf": URDF.replace('name="bot"', f'name="{name}"')})
+    (project / "robot.yaml").write_text(HEADER)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2 and f"bot.urdf:1:1: error: {message}" in run.err, run.err
+    assert snapshot(project) == before
+    run = _apply(project, "    gameobject: Robot\n    assets: Assets/Robot\n")
+    assert run.code == 0, run.err
+    assert (project / "Assets" / "Robot" / "Materials" / "blue.mat").is_file()
+
+
 WITHOUT_ARM = URDF.split('  <link name="arm">')[0] + "</robot>\n"
 
 

@@ -90,6 +90,7 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
             project=manifest.path.parent,
             plugin_newline=entry.plugin_newline,
         )
+    _check_default_names(imported, entry)
     name = imported.robot.name
     assets = entry.assets or f"Assets/Urdf/{name}"
     files, metas, guids = [], [], {}
@@ -112,6 +113,33 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
         tuple(metas + _folder_metas(root, assets, imported.files, salt)),
         guids,
     )
+
+
+# Unity refuses these in an asset's name on every platform
+_NOT_IN_FOLDER_NAMES = frozenset('/\\:*?"<>|')
+
+
+def _check_default_names(imported: RobotImport, entry: RobotEntry) -> None:
+    """The robot's name, where it stands for what the entry leaves out: as the asset folder
+    (``Assets/Urdf/<name>``), ``..``, ``.`` or a separator would put the files elsewhere (and
+    the lock would refuse their paths on the next run); as the GameObject, ``/`` would make the
+    robot the child of another object, and no name at all is no path."""
+    name = imported.robot.name
+    unusable = []
+    if entry.gameobject is None and (not name or "/" in name):
+        unusable.append(("a GameObject name", "`gameobject`"))
+    bad = {c for c in name if c in _NOT_IN_FOLDER_NAMES or not c.isprintable()}
+    if entry.assets is None and (bad or not name.strip(". ")):
+        unusable.append(("a folder name under Assets/Urdf", "`assets`"))
+    if unusable:
+        raise LocatedError.at(
+            imported.robot.location,
+            f"the robot's name {name!r} is not usable as "
+            + " or ".join(what for what, _ in unusable),
+            hint="rename the robot, or give its manifest entry "
+            + " and ".join(key for _, key in unusable)
+            + f" (line {entry.locations.item.line})",
+        )
 
 
 def _folder_metas(root: Path, assets: str, files: Iterable[str], salt: str) -> list[DesiredFile]:
