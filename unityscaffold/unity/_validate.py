@@ -8,6 +8,7 @@ changed document parses as YAML.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import operator
 import re
@@ -339,13 +340,24 @@ def _parses(
     body = doc.text[doc.text.index("\n") + 1 :]
     if is_reference_list(body):
         return []  # SceneRoots gaining a root: no YAML parse of a list with a line per root
+    found = _yaml_problem(body)
+    if found is None:
+        return []
+    problem, within = found
+    if why == "after editing":
+        return [loc.at(doc, None, f"is not valid YAML after editing ({problem})", hint, within)]
+    return [loc.at(doc, None, f"is not valid YAML ({problem}); {why}", hint, within)]
+
+
+@functools.lru_cache(maxsize=32)
+def _yaml_problem(body: str) -> tuple[str, tuple[int, int] | None] | None:
+    """What keeps a document's body from being YAML, and where; None when it is. Kept for a
+    few bodies: an import writes the same large one many times (ROS#'s cylinder collider
+    Mesh, 124 KB, once per collider), whose documents differ only in their header."""
     try:
         yaml.load(body, Loader=_BaseLoader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         problem = getattr(exc, "problem", None) or str(exc).strip().split("\n")[0]
-        within = (mark.line, mark.column) if mark is not None else None
-        if why == "after editing":
-            return [loc.at(doc, None, f"is not valid YAML after editing ({problem})", hint, within)]
-        return [loc.at(doc, None, f"is not valid YAML ({problem}); {why}", hint, within)]
-    return []
+        return problem, (mark.line, mark.column) if mark is not None else None
+    return None
