@@ -16,9 +16,9 @@ the cost per topic should stay flat as N grows.
 
 Robots: `robots:` entries applied into a scene from clean (scene, lock and the robot's assets
 reset) and the no-op re-apply, as whole processes: ROS#'s r2d2 (the tutorial's URDF, read from
-../shared/vendor; its <mesh> geometries become boxes while the scene writer refuses meshes) and
-a generated robot of 500 links (bench_urdf's). Aims: r2d2 from clean under 1 s, its no-op
-within the sample's no-op aim.
+$UNITYSCAFFOLD_VENDOR or ../shared/vendor; its <mesh> geometries become boxes while the scene
+writer refuses meshes) and a generated robot of 500 links (bench_urdf's). Aims: r2d2 from clean
+under 1 s, its no-op within the sample's no-op aim.
 
 Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...] [--parts sample,robots,sweep]
 """
@@ -194,7 +194,9 @@ def sample(rounds: int, work: Path) -> None:
     print(_line("bare python start", bare, ""))
 
 
-R2D2 = REPO.parent / "shared/vendor/ros-sharp/samples/gazebo-ros2-step1"
+# ROS#'s r2d2 tutorial sample: in UNITYSCAFFOLD_VENDOR, as for the tests, else where CI puts it
+VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
+R2D2 = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
 
 
 def robots(rounds: int, work: Path) -> None:
