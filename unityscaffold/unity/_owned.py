@@ -26,7 +26,7 @@ from unityscaffold.unity._edits import (
 )
 from unityscaffold.unity._split import Doc
 from unityscaffold.unity.owned import OwnedComponent, OwnedDocument, OwnedObject
-from unityscaffold.unity.values import Verbatim
+from unityscaffold.unity.values import FieldValue, Verbatim
 
 __all__ = ["remove_owned", "sync_owned"]
 
@@ -51,7 +51,7 @@ def sync_owned(
         created = docs.get(obj.file_id) is None
         if created:
             _create(docs, obj)
-        _enforce(docs, obj)
+        _enforce(docs, obj, created)
         for component in obj.components:
             _component(docs, obj, component)
         if created:
@@ -86,7 +86,7 @@ def _create(docs: Documents, obj: OwnedObject) -> None:
     docs.insert(Doc(4, obj.transform_id, False, tr))
 
 
-def _enforce(docs: Documents, obj: OwnedObject) -> None:
+def _enforce(docs: Documents, obj: OwnedObject, created: bool) -> None:
     go, tr = docs.require(obj.file_id), docs.require(obj.transform_id)
     if go.class_id != 1 or tr.class_id != 4:
         raise UserError(
@@ -94,8 +94,9 @@ def _enforce(docs: Documents, obj: OwnedObject) -> None:
             f"Transform apply made for {obj.path}",
             hint="the scene was edited outside Unity; restore it from version control",
         )
-    set_fields(docs, go, [("m_ObjectHideFlags", obj.hide_flags), ("m_Name", obj.name)])
-    set_fields(docs, tr, [("m_ObjectHideFlags", obj.hide_flags), *obj.transform])
+    put = _fill if created else set_fields
+    put(docs, go, [("m_ObjectHideFlags", obj.hide_flags), ("m_Name", obj.name)])
+    put(docs, tr, [("m_ObjectHideFlags", obj.hide_flags), *obj.transform])
     wanted = [obj.transform_id, *(c.file_id for c in obj.components)]
     classes = [4, *(c.class_id for c in obj.components)]
     items = [component_item(docs.era, c, i) for i, c in zip(wanted, classes, strict=True)]
@@ -148,7 +149,22 @@ def _component(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> 
     if doc is None:
         doc = Doc(component.class_id, component.file_id, False, _new(docs, obj, component))
         docs.insert(doc)
-    set_fields(docs, doc, list(component.fields))
+        _fill(docs, doc, list(component.fields))
+    else:
+        set_fields(docs, doc, list(component.fields))
+
+
+def _fill(docs: Documents, doc: Doc, fields: Sequence[tuple[str, FieldValue]]) -> bool:
+    """``set_fields`` for a document made in this run: its fields are replaced without first
+    reading what they hold (a YAML parse per field, most of the time of a large import)."""
+    missing = []
+    for name, value in fields:
+        if F.field_span(doc, name) is None:
+            missing.append((name, value))
+        else:
+            T.replace_field(doc, name, _emit(docs, name, value))
+    docs.touch(doc)
+    return set_fields(docs, doc, missing) if missing else True
 
 
 def _new(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> str:
