@@ -45,8 +45,11 @@ Label = str
 #: Parts of the COMPLETED scene whose writer has not landed, by what they await: a predicate on
 #: a GameObject's label (its path with sibling numbers) that leaves it (and all under it) out.
 PENDING: dict[str, Callable[[Label], bool]] = {
-    # the <mesh> visuals and collisions (l_finger, l_finger_tip .dae models): the urdf-models
-    # work; until then _urdf gives those parts a box, and the parts are not compared
+    # the <mesh> visuals and collisions (l_finger, l_finger_tip .dae models), which the scene
+    # writer refuses until model instances are written (apply/_robots.py, _Writer._model);
+    # until then _urdf gives those parts a box, and the parts are not compared. With them,
+    # _labels must also name an instance's stripped documents and added MeshColliders (by the
+    # instance's label and role), so that references to them compare.
     "mesh models": lambda label: label in _MESH_PARTS,
 }
 #: Fields left out of the comparison, by (component class, field), with why.
