@@ -146,6 +146,10 @@ def test_patterns_mean_the_same_in_python_and_json_schema() -> None:
         "ws://",
         "_x",
         "A_1",
+        "192.168.1.10",
+        "robot-1.local",
+        "-robot",
+        "tcp://robot",
     ]
     for name, pattern in spec.patterns().items():
         check = jsonschema.Draft202012Validator({"type": "string", "pattern": pattern})
@@ -158,6 +162,7 @@ def test_docs_describe_every_key_in_its_section() -> None:
     headings = {
         "manifest": "## Top level",
         "connector": "## `connector`",
+        "tcpConnector": "## `connector` under `runtime: ros-tcp-connector`",
         "topic": "## `topics`",
         "service": "## `services`",
         "action": "## `actions`",

@@ -263,3 +263,84 @@ def test_topic_names_follow_their_ros_version(
     tmp_path: Path, ros: int, name: str, valid: bool
 ) -> None:
     assert _verdicts(tmp_path, _variant(ros, "topics.0.name", name))[:2] == (valid, valid)
+
+
+TCP_BASE: dict[str, Any] = {
+    "version": 1,
+    "ros": 1,
+    "runtime": "ros-tcp-connector",
+    "scene": "Assets/Scenes/Main.unity",
+    "connector": {"gameobject": "ROSConnection", "host": "192.168.1.10", "port": 10000},
+    "topics": [
+        {"name": "/cmd_vel", "type": "geometry_msgs/Twist", "direction": "publish", "rate": 10},
+        {"name": "/odom", "type": "nav_msgs/Odometry", "direction": "subscribe"},
+    ],
+    "services": [{"name": "/reset", "type": "std_srvs/Trigger", "role": "client"}],
+}
+# (ros, where, value): the keys each runtime has, its connector's values, and ROS 2 actions.
+TCP_VARIANTS: list[tuple[int, str, Any]] = [
+    (1, "runtime", "ros-sharp"),  # then host and port are ROS#'s connector's unknown keys
+    (1, "runtime", "ros-tcp"),
+    (1, "connector.host", "robot.local"),
+    (1, "connector.host", "tcp://robot"),
+    (1, "connector.host", "robot:10000"),
+    (1, "connector.port", 65535),
+    (1, "connector.port", 65536),
+    (1, "connector.port", 0),
+    (1, "connector.url", "ws://localhost:9090"),
+    (1, "connector.timeout", 10),
+    (1, "connector.keepalive", 0.5),
+    (1, "connector.keepalive", 0),
+    (1, "connector.sleep", INF),
+    (1, "connector.network_timeout", "2"),
+    (1, "connector.show_hud", False),
+    (1, "connector.connect_on_start", "no"),
+    (1, "connector.tf_topics", ["/tf", "/tf_static"]),
+    (1, "connector.tf_topics", ["tf//x"]),
+    (1, "connector.listen_for_tf", False),
+    (1, "topics.0.queue", 1),
+    (1, "topics.0.latch", True),
+    (1, "topics.0.latch", 1),
+    (1, "topics.0.throttle", 10),
+    (1, "topics.1.queue", 5),
+    (1, "topics.1.throttle", 5),
+    (1, "topics.1.latch", True),
+    (1, "actions", [{"name": "/dock", "type": "move_base_msgs/action/MoveBase", "role": "client"}]),
+    (2, "actions", [{"name": "/dock", "type": "test_msgs/action/Fibonacci", "role": "client"}]),
+    (2, "actions", []),
+]
+
+
+@pytest.mark.parametrize(
+    ("ros", "where", "value"), TCP_VARIANTS, ids=[f"ros{r}:{w}={v!r}" for r, w, v in TCP_VARIANTS]
+)
+def test_schema_and_scaffold_agree_under_ros_tcp_connector(
+    tmp_path: Path, ros: int, where: str, value: Any
+) -> None:
+    data = copy.deepcopy(TCP_BASE)
+    data["ros"] = ros
+    *parents, last = where.split(".")
+    node: Any = data
+    for part in parents:
+        node = node[int(part)] if part.isdigit() else node[part]
+    node[int(last) if last.isdigit() else last] = value
+    schema_ok, tool_ok, text = _verdicts(tmp_path, data)
+    assert schema_ok == tool_ok, f"schema {schema_ok}, scaffold {tool_ok}:\n{text}"
+
+
+@pytest.mark.parametrize(
+    ("where", "value", "valid"),
+    [
+        ("topics.0.latch", True, False),  # a ros-tcp-connector key
+        ("topics.0.queue", 3, False),  # a ROS# publisher has no queue
+        ("connector.host", "robot", False),
+    ],
+)
+def test_connector_only_keys_are_refused_by_both_under_ros_sharp(
+    tmp_path: Path, where: str, value: Any, valid: bool
+) -> None:
+    assert _verdicts(tmp_path, _variant(1, where, value))[:2] == (valid, valid)
+
+
+def test_the_connector_base_manifest_is_valid_to_both(tmp_path: Path) -> None:
+    assert _verdicts(tmp_path, copy.deepcopy(TCP_BASE))[:2] == (True, True)

@@ -12,6 +12,7 @@ from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._fields import read_fields
 from unityscaffold.manifest._paths import project_path
 from unityscaffold.manifest._read import Reader
+from unityscaffold.manifest._topic_keys import read_rates
 from unityscaffold.manifest._yaml import YMap, YNode
 from unityscaffold.manifest.model import (
     Action,
@@ -24,6 +25,7 @@ from unityscaffold.manifest.model import (
     default_class_name,
     is_csharp_identifier,
 )
+from unityscaffold.manifest.runtime import Runtime
 
 __all__ = [
     "Context",
@@ -55,6 +57,7 @@ class Context:
     create: bool
     connector_gameobject: str
     ros: int | None = None  # the manifest's ROS version, when it is valid
+    runtime: Runtime = Runtime.ROS_SHARP
 
 
 def locations(m: YMap) -> Locations:
@@ -230,7 +233,7 @@ def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:
         type_ = None
     choice = r.choice(m, "direction", [d.value for d in Direction])
     direction = Direction(choice) if choice else None
-    rate, throttle, queue = _rates(r, m, direction)
+    rates = read_rates(r, m, direction, ctx.runtime)
     topic = Topic(
         name=name or "",
         type=type_ or "",
@@ -239,40 +242,13 @@ def read_topic(r: Reader, node: YNode, ctx: Context) -> Topic | None:
         scene=read_scene(r, m, ctx, "topic") or "",
         create=_create(r, m, ctx),
         class_name=_class_name(r, m, name, direction),
-        rate=rate,
-        throttle=throttle,
-        queue=queue,
+        rate=rates.rate,
+        throttle=rates.throttle,
+        queue=rates.queue,
         locations=locations(m),
+        latch=rates.latch,
     )
     return topic if name and type_ and direction else None
-
-
-def _rates(
-    r: Reader, m: YMap, direction: Direction | None
-) -> tuple[float | None, int | None, int | None]:
-    """``rate`` for publishers, ``throttle``/``queue`` for subscribers; misplaced ones fail."""
-    if direction is Direction.SUBSCRIBE and (entry := m.get("rate")) is not None:
-        r.error(
-            entry.key_location,
-            "'rate' applies only to topics with direction: publish",
-            hint="a subscriber gets messages at the publisher's rate; use 'throttle' "
-            "(milliseconds between messages) to slow them down",
-        )
-    if direction is Direction.PUBLISH:
-        for key in ("throttle", "queue"):
-            if (entry := m.get(key)) is not None:
-                r.error(
-                    entry.key_location,
-                    f"'{key}' applies only to topics with direction: subscribe",
-                    hint="use 'rate' (messages per second) to set how often Unity publishes",
-                )
-    rate = throttle = queue = None
-    if direction is not Direction.SUBSCRIBE:
-        rate = r.positive_number(m, "rate", "messages per second")
-    if direction is not Direction.PUBLISH:
-        throttle = r.integer(m, "throttle", 0, "milliseconds")
-        queue = r.integer(m, "queue", 1)
-    return rate, throttle, queue
 
 
 def _create(r: Reader, m: YMap, ctx: Context) -> bool:
@@ -311,6 +287,8 @@ def _read_role_entry(
     type_ = r.text(m, "type", expected_type, pattern, hint=_type_hint(m, kind))
     if type_ is not None and not _no_action_part(r, m, ctx, expected_type, in_actions=in_actions):
         type_ = None
+    if type_ is not None and in_actions and not _action_carried(r, m, ctx):
+        type_ = None
     choice = r.choice(m, "role", [x.value for x in Role])
     role = Role(choice) if choice else None
     read = entry(
@@ -324,6 +302,21 @@ def _read_role_entry(
         locations=locations(m),
     )
     return read if name and type_ and role else None
+
+
+def _action_carried(r: Reader, m: YMap, ctx: Context) -> bool:
+    """False (reported) for a ROS 2 action under ROS-TCP-Connector: its endpoint resolves
+    message and service types only (``pkg.msg``, ``pkg.srv``), never ``pkg.action``."""
+    if ctx.ros != 2 or ctx.runtime is not Runtime.TCP_CONNECTOR:
+        return True
+    r.error(
+        m.get("type").value.location,  # type: ignore[union-attr]
+        "ROS 2 actions cannot pass through ROS-TCP-Connector: its ROS 2 endpoint "
+        "(ROS-TCP-Endpoint) resolves only message and service types, not pkg/action/ types",
+        hint="use runtime: ros-sharp for this action (rosbridge carries ROS 2 actions), or "
+        "call the action through a service of your own on the ROS side",
+    )
+    return False
 
 
 def read_component(r: Reader, node: YNode, ctx: Context) -> Component | None:

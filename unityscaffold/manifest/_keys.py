@@ -24,6 +24,9 @@ NAMESPACE = f"^{CSHARP_IDENTIFIER}([.]{CSHARP_IDENTIFIER})*$"
 GAMEOBJECT = "^[^/]+(/[^/]+)*$"
 SCENE = "[.]unity$"
 URL = "^wss?://[^\\s/]+(/\\S*)?$"
+# An IPv4 address or a host name (ROSConnection's m_RosIPAddress; it resolves either).
+_LABEL = "[A-Za-z0-9]([A-Za-z0-9-]*[A-Za-z0-9])?"
+HOST = f"^{_LABEL}([.]{_LABEL})*$"
 GUID = "^[0-9a-f]{32}$"
 KEY = "^[A-Za-z0-9_.-]+$"
 #: The largest C# ``int``: timeout, throttle and queue become int fields in C#.
@@ -83,6 +86,9 @@ class Section:
     doc: str
     keys: tuple[Key, ...]
     rules: tuple[Mapping[str, Any], ...] = ()
+    #: Keys of a sibling section that this one refuses, each with the hint that says why
+    #: (the other runtime's ``connector:`` keys).
+    foreign: tuple[tuple[str, str], ...] = ()
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -108,6 +114,7 @@ def patterns() -> dict[str, str]:
         "gameobject": GAMEOBJECT,
         "scene": SCENE,
         "url": URL,
+        "host": HOST,
         "not_portable": NOT_PORTABLE,
         "not_relative": NOT_RELATIVE,
         "keyword_part": KEYWORD_PART,

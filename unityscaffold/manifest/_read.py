@@ -83,6 +83,7 @@ class Reader:
                 hint = suggest(entry.key, section.names)
                 if hint:
                     meant.add(hint.split("'")[1])
+                hint = dict(section.foreign).get(entry.key, hint)
                 self.error(
                     entry.key_location,
                     f"unknown key '{entry.key}' in {section.label}",

@@ -26,6 +26,7 @@ from unityscaffold.manifest._keys import (
     GAMEOBJECT,
     GAMEOBJECT_VALUE,
     GUID,
+    HOST,
     INT32_MAX,
     KEY,
     KEYWORD_PART,
@@ -51,15 +52,15 @@ from unityscaffold.manifest._keys import (
     ref,
     scene_key,
 )
+from unityscaffold.manifest._spec_connector import (
+    CONNECTOR,
+    RUNTIME,
+    RUNTIME_RULES,
+    TCP_CONNECTOR,
+)
 from unityscaffold.manifest._spec_objects import BUILTIN, OBJECT, UI
 from unityscaffold.manifest._spec_robots import ROBOT
-from unityscaffold.manifest.model import (
-    MANIFEST_VERSION,
-    Direction,
-    Protocol,
-    Role,
-    Serializer,
-)
+from unityscaffold.manifest.model import MANIFEST_VERSION, Direction, Role
 
 __all__ = [
     "ACTION",
@@ -75,6 +76,7 @@ __all__ = [
     "FLOAT32_TINY",
     "GAMEOBJECT",
     "GUID",
+    "HOST",
     "INT32_MAX",
     "KEY",
     "KEYWORD_PART",
@@ -93,6 +95,7 @@ __all__ = [
     "SECTIONS",
     "SERVICE",
     "SRV_TYPE",
+    "TCP_CONNECTOR",
     "TOP",
     "TOPIC",
     "UI",
@@ -120,6 +123,7 @@ TOP = Section(
             {"type": "integer", "enum": [1, 2]},
             required=True,
         ),
+        RUNTIME,
         Key(
             "project",
             "Unity project root (the folder holding `Assets/`), relative to this file.",
@@ -164,8 +168,9 @@ TOP = Section(
         ),
         Key(
             "connector",
-            "ROS#'s RosConnector: where it lives and its settings.",
-            {"anyOf": [ref("connector"), {"type": "null"}]},
+            "The runtime's connection component (ROS#'s RosConnector, ROS-TCP-Connector's "
+            "ROSConnection): where it lives and its settings.",
+            {"anyOf": [ref(CONNECTOR.ref), ref(TCP_CONNECTOR.ref), {"type": "null"}]},
         ),
         Key("topics", "Topics Unity publishes or subscribes to.", list_of(ref("topic"))),
         Key("services", "Services Unity calls or provides.", list_of(ref("service"))),
@@ -208,49 +213,7 @@ TOP = Section(
                 }
             },
         },
-    ),
-)
-
-CONNECTOR = Section(
-    "connector",
-    "connector",
-    "ROS#'s RosConnector component.",
-    (
-        Key(
-            "scene",
-            "Scene of the RosConnector, relative to the project. Default: the top-level `scene`.",
-            SCENE_VALUE,
-        ),
-        Key(
-            "gameobject",
-            "Hierarchy path of the GameObject holding the RosConnector; created if missing.",
-            GAMEOBJECT_VALUE,
-            default="RosConnector",
-        ),
-        Key(
-            "url",
-            "rosbridge WebSocket URL (`RosBridgeServerUrl`).",
-            {"type": "string", "pattern": URL},
-            default="ws://localhost:9090",
-        ),
-        Key(
-            "timeout",
-            "Connection timeout in seconds (`SecondsTimeout`).",
-            {"type": "integer", "minimum": 1, "maximum": INT32_MAX},
-            default=DEFAULT_TIMEOUT,
-        ),
-        Key(
-            "serializer",
-            "JSON serializer (`Serializer`): `microsoft` is System.Text.Json.",
-            {"enum": [s.key for s in Serializer]},
-            default=Serializer.MICROSOFT.key,
-        ),
-        Key(
-            "protocol",
-            "WebSocket implementation (`protocol`).",
-            {"enum": [p.key for p in Protocol]},
-            default=Protocol.WEBSOCKET_SHARP.key,
-        ),
+        *RUNTIME_RULES,
     ),
 )
 
@@ -299,19 +262,26 @@ TOPIC = Section(
         ),
         Key(
             "queue",
-            "Subscribe only: rosbridge `queue_length`.",
+            "ros-sharp, subscribe only: rosbridge `queue_length`; ros-tcp-connector, publish "
+            "only: the ROS publisher's `queue_size`.",
             {"type": "integer", "minimum": 1, "maximum": INT32_MAX},
+        ),
+        Key(
+            "latch",
+            "ros-tcp-connector, publish only: latch the ROS publisher (the last message goes "
+            "to every later subscriber).",
+            BOOL,
         ),
         CLASS,
     ),
     rules=(
         {
             "if": {"properties": {"direction": {"const": "publish"}}, "required": ["direction"]},
-            "then": {"properties": {"throttle": False, "queue": False}},
+            "then": {"properties": {"throttle": False}},
         },
         {
             "if": {"properties": {"direction": {"const": "subscribe"}}, "required": ["direction"]},
-            "then": {"properties": {"rate": False}},
+            "then": {"properties": {"rate": False, "latch": False}},
         },
     ),
 )
@@ -441,6 +411,7 @@ COMPONENT = Section(
 SECTIONS: tuple[Section, ...] = (
     TOP,
     CONNECTOR,
+    TCP_CONNECTOR,
     TOPIC,
     SERVICE,
     ACTION,

@@ -9,14 +9,13 @@ from unityscaffold.fileout import real_path
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._checks import check_across
+from unityscaffold.manifest._connector import ConnectorPlace, read_connector
 from unityscaffold.manifest._entries import (
     EXPECT_SCENE,
     Context,
     locations,
     read_action,
     read_component,
-    read_gameobject,
-    read_scene,
     read_service,
     read_topic,
 )
@@ -25,14 +24,8 @@ from unityscaffold.manifest._paths import folder_path, project_path
 from unityscaffold.manifest._read import Reader
 from unityscaffold.manifest._robots import read_robot
 from unityscaffold.manifest._yaml import YEntry, YMap, YScalar, compose
-from unityscaffold.manifest.model import (
-    MANIFEST_VERSION,
-    Connector,
-    Manifest,
-    Protocol,
-    Serializer,
-    is_csharp_identifier,
-)
+from unityscaffold.manifest.model import MANIFEST_VERSION, Manifest, is_csharp_identifier
+from unityscaffold.manifest.runtime import Runtime
 
 __all__ = ["load_manifest", "parse_manifest"]
 
@@ -100,11 +93,12 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     if ros is not None and ros not in (1, 2):
         r.invalid(top.get("ros"), "1 or 2")  # type: ignore[arg-type]
         ros = None
+    runtime = _runtime(r, top)
     project_root = _project_root(r, top, path.parent)
     output_dir = _output(r, top, project_root)
     scene = _top_scene(r, top, project_root)
     create = r.boolean(top, "create_gameobjects")
-    connector = _connector(r, top, project_root, scene)
+    connector = read_connector(r, top, runtime, ConnectorPlace(project_root, scene))
     ctx = Context(
         project_root,
         scene,
@@ -112,6 +106,7 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         True if create is None else create,
         connector.gameobject,
         ros,
+        runtime,
     )
     topics = [read_topic(r, n, ctx) for n in r.items(top, "topics")]
     services = [read_service(r, n, ctx) for n in r.items(top, "services")]
@@ -149,7 +144,13 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
         objects=good_objects,
         actions=good_actions,
         robots=tuple(robot for robot in robots if robot is not None),
+        runtime=runtime,
     )
+
+
+def _runtime(r: Reader, top: YMap) -> Runtime:
+    choice = r.choice(top, "runtime", [x.value for x in Runtime])
+    return Runtime(choice) if choice else Runtime.ROS_SHARP
 
 
 def _version(r: Reader, top: YMap) -> int | None:
@@ -224,32 +225,3 @@ def _interfaces(r: Reader, top: YMap, base: Path) -> tuple[Path, ...]:
         if folder is not None:
             folders.append(folder)
     return tuple(folders)
-
-
-def _connector(r: Reader, top: YMap, project_root: Path, scene: str | None) -> Connector:
-    entry = top.get("connector")
-    m = YMap((), top.location)
-    if entry is not None and not (isinstance(entry.value, YScalar) and entry.value.value is None):
-        m = r.mapping(entry.value, spec.CONNECTOR) or m
-    defaults = {k.name: k.default for k in spec.CONNECTOR.keys}
-    ctx = Context(
-        project_root, scene, top.get("scene") is not None, True, str(defaults["gameobject"])
-    )
-    serializer = r.choice(m, "serializer", [s.key for s in Serializer])
-    protocol = r.choice(m, "protocol", [p.key for p in Protocol])
-    return Connector(
-        scene=read_scene(r, m, ctx, "connector") or "",
-        gameobject=read_gameobject(r, m, ctx.connector_gameobject) or "",
-        url=r.text(
-            m,
-            "url",
-            "a rosbridge URL such as ws://localhost:9090",
-            spec.URL,
-            hint="rosbridge listens on ws:// (or wss://) host:port",
-        )
-        or str(defaults["url"]),
-        timeout=r.integer(m, "timeout", 1, "seconds") or spec.DEFAULT_TIMEOUT,
-        serializer=next(s for s in Serializer if s.key == (serializer or defaults["serializer"])),
-        protocol=next(p for p in Protocol if p.key == (protocol or defaults["protocol"])),
-        locations=locations(m),
-    )

@@ -17,6 +17,7 @@ from unityscaffold.errors import SourceLocation
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.manifest.locations import Locations
 from unityscaffold.manifest.robot_entry import RobotEntry
+from unityscaffold.manifest.runtime import Runtime, TcpConnection
 
 __all__ = [
     "CSHARP_IDENTIFIER",
@@ -155,7 +156,11 @@ class ComponentField:
 
 @dataclass(frozen=True, slots=True)
 class Connector:
-    """ROS#'s RosConnector: where it lives and its serialized settings."""
+    """The runtime's connection component: where it lives and its serialized settings.
+
+    ``url`` … ``protocol`` are ROS#'s RosConnector's (at their defaults under the other
+    runtime); ``tcp`` is ROS-TCP-Connector's ROSConnection's, None under ``ros-sharp``.
+    """
 
     scene: str
     gameobject: str
@@ -164,6 +169,7 @@ class Connector:
     serializer: Serializer
     protocol: Protocol
     locations: Locations
+    tcp: TcpConnection | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -173,6 +179,8 @@ class Topic:
     ``scene`` is relative to the project root and already defaulted; ``create`` is the effective
     choice (the entry's ``create`` or the manifest's ``create_gameobjects``). ``rate`` is in Hz
     (None: publish on demand); ``throttle`` in milliseconds and ``queue`` are None when unset.
+    ``queue`` is rosbridge's queue of a subscriber under ROS#, the ROS publisher's queue size
+    under ROS-TCP-Connector, which also has ``latch`` (None when unset).
     """
 
     name: str
@@ -186,6 +194,7 @@ class Topic:
     throttle: int | None
     queue: int | None
     locations: Locations
+    latch: bool | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -327,6 +336,7 @@ class Manifest:
     objects: tuple[SceneObject, ...] = ()
     actions: tuple[Action, ...] = ()
     robots: tuple[RobotEntry, ...] = ()
+    runtime: Runtime = Runtime.ROS_SHARP
 
     @property
     def output(self) -> str:
