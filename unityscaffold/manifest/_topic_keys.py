@@ -32,11 +32,11 @@ def _queue_side(runtime: Runtime) -> Direction:
 
 def _misplaced(r: Reader, m: YMap, direction: Direction | None, runtime: Runtime) -> None:
     """Report keys of the other direction or of the other runtime, each once."""
-    for key, (owner, hint) in RUNTIME_ONLY.items():
+    for key, (owner, why) in RUNTIME_ONLY.items():
         if owner is not runtime and (entry := m.get(key)) is not None:
-            r.error(entry.key_location, f"'{key}' is not a {runtime.value} topic key", hint=hint)
+            r.error(entry.key_location, f"'{key}' is not a {runtime.value} topic key", hint=why)
     if direction is Direction.SUBSCRIBE and (entry := m.get("rate")) is not None:
-        hint = (
+        slower = (
             "a subscriber gets messages at the publisher's rate"
             if runtime is Runtime.TCP_CONNECTOR
             else "a subscriber gets messages at the publisher's rate; use 'throttle' "
@@ -53,7 +53,7 @@ def _misplaced(r: Reader, m: YMap, direction: Direction | None, runtime: Runtime
     for key, wanted in side.items():
         if direction in (None, wanted) or (entry := m.get(key)) is None:
             continue
-        hint: str | None = _RATE_HINT if wanted is Direction.SUBSCRIBE else None
+        hint = _RATE_HINT if wanted is Direction.SUBSCRIBE else None
         if key == "queue" and runtime is Runtime.TCP_CONNECTOR:
             hint = "ROS-TCP-Endpoint's subscriber queue is its own (10); queue sets a publisher's"
         r.error(
