@@ -43,7 +43,7 @@ def _misplaced(r: Reader, m: YMap, direction: Direction | None, runtime: Runtime
             "(milliseconds between messages) to slow them down"
         )
         r.error(
-            entry.key_location, "'rate' applies only to topics with direction: publish", hint=hint
+            entry.key_location, "'rate' applies only to topics with direction: publish", hint=slower
         )
     side = {"queue": _queue_side(runtime)}
     if runtime is Runtime.TCP_CONNECTOR:
