@@ -14,13 +14,9 @@ from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._references import paths_in, untyped_value
+from unityscaffold.apply._target import target_for
 from unityscaffold.apply._typed import check_names
-from unityscaffold.apply._wiring import (
-    catalog_values,
-    connector_fields,
-    hand_set_connector,
-    requirements,
-)
+from unityscaffold.apply._wiring import catalog_values, hand_set_connector, requirements
 from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest.model import Component
 from unityscaffold.unity import ObjectRef, ScriptRef
@@ -43,14 +39,16 @@ class Pending:
 def attach_connector(
     ctx: SceneContext, editor: SceneEditor, connector_script: ScriptRef | None
 ) -> int:
-    """The manifest's RosConnector, if it lives in this scene: its fileID, else 0."""
+    """The manifest's connection component (ROS#'s RosConnector, ROS-TCP-Connector's
+    ROSConnection), if it lives in this scene: its fileID, else 0."""
     m = ctx.manifest
     if m.connector.scene != editor.plan.relative:
         return 0
     assert connector_script is not None
     where = m.connector.locations.of("gameobject")
+    fields = target_for(m).connection_fields(m)
     return editor.attach(
-        m.connector.gameobject, True, connector_script, connector_fields(m), where, "connector"
+        m.connector.gameobject, True, connector_script, fields, where, "connector"
     ).file_id
 
 
@@ -62,21 +60,25 @@ def attach_generated(
     owned_ids: set[int],
 ) -> None:
     """The generated topic, service and action scripts of this scene."""
+    target = target_for(ctx.manifest)
     for script in ctx.code.scripts:
         item = script.item
         if item.scene != editor.plan.relative:
             continue
         if connector_id == 0:
             editor.plan.edits.append(
-                f"note: {script.view.class_name}'s Connector stays empty (the "
-                "RosConnector is in another scene); it finds one at runtime"
+                f"note: {script.view.class_name}'s {target.connection_field} stays empty "
+                f"(the {target.connection_class} is in another scene); it finds one at runtime"
             )
         ref = ScriptRef(
             script.guid, class_name=script.view.class_name, namespace=script.view.namespace
         )
-        chosen = hand_set_connector(editor.doc, item.gameobject, ref, connector_script, owned_ids)
+        field = target.connection_field
+        chosen = hand_set_connector(
+            editor.doc, item.gameobject, (ref, field), connector_script, owned_ids
+        )
         fields: list[tuple[str, FieldValue]] = [
-            ("Connector", ObjectRef(chosen or connector_id)),
+            (field, ObjectRef(chosen or connector_id)),
             *script.view.serialized_fields(),
         ]
         where = item.locations.of("gameobject")
@@ -105,7 +107,7 @@ def attach_entries(
             check_names(facts.class_name, facts.fields, entry.fields)
         if entry in needs_connector and connector_script is not None:
             # ROS#'s stock components [RequireComponent(typeof(RosConnector))].
-            fields = connector_fields(ctx.manifest)
+            fields = target_for(ctx.manifest).connection_fields(ctx.manifest)
             label = f"connector for {entry.script}"
             editor.attach(entry.gameobject, entry.create, connector_script, fields, where, label)
         item = Pending(entry, ref, facts, where)

@@ -12,25 +12,15 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from unityscaffold.apply._moves import Moves
-from unityscaffold.apply._rossharp import RESERVED_NAMES
-from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
+from unityscaffold.apply._target import RuntimeTarget, target_for
+from unityscaffold.codegen import GeneratedCode, Options
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.naming import ClassClash
-from unityscaffold.codegen.scripts import (
-    ActionClientScript,
-    ActionServerScript,
-    PublisherScript,
-    Script,
-    ServiceClientScript,
-    ServiceServerScript,
-    SubscriberScript,
-    render_script,
-)
+from unityscaffold.codegen.scripts import Script, render_script
 from unityscaffold.errors import Diagnostic, LocatedError, UserError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.interfaces.model import (
     ActionSpec,
-    Dialect,
     Interface,
     InterfaceKind,
     MessageSpec,
@@ -38,7 +28,7 @@ from unityscaffold.interfaces.model import (
 )
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
-from unityscaffold.manifest.model import Action, Direction, Manifest, Role, Service, Topic
+from unityscaffold.manifest.model import Action, Manifest, Service, Topic
 from unityscaffold.unity.meta import folder_meta, meta_guid, monoscript_meta
 from unityscaffold.unity.project import ScriptInfo
 
@@ -139,39 +129,15 @@ def _action_of(registry: Registry, message: MessageSpec) -> str | None:
 
 _Entry = tuple[Entry, _Spec]
 
-# ROS 1 std_msgs types whose ROS# class is a hand-written time primitive of another shape.
-_MISSHAPEN_IN_ROSSHARP = ("std_msgs/Time", "std_msgs/Duration")
 
-
-def _check_time_messages(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> None:
-    """Refuse an entry whose type uses ROS 1's std_msgs/Time or std_msgs/Duration while ROS#'s
-    classes are in use: ROS#'s Std.Time/Std.Duration, which stand for them, are the bare time
-    primitive ({secs, nsecs}), while these messages hold it in a field 'data'. rosbridge refuses
-    what such a class sends and the value it receives is lost (seen with rosbridge 0.11)."""
-    if manifest.ros is not Dialect.ROS1 or manifest.namespace is not None:
-        return
-    for item, spec in entries:
-        used = {m.full_name for m in registry.closure([spec])}
-        for name in _MISSHAPEN_IN_ROSSHARP:
-            if name in used:
-                short = name.split("/")[1]
-                raise LocatedError.at(
-                    item.locations.of("type"),
-                    f"{name} cannot be sent or received with ROS#'s class for it: "
-                    f"Std.{short} is the bare {short.lower()} primitive {{secs, nsecs}}, while "
-                    f"{name} holds it in a field 'data' (rosbridge refuses what it sends)",
-                    hint="choose a root namespace with the manifest key `namespace:` "
-                    f"(then a {name} class of the right shape is generated), or use a "
-                    f"message with a {short.lower()} field",
-                )
-
-
-def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> GeneratedCode:
+def _generate(
+    manifest: Manifest, registry: Registry, entries: list[_Entry], target: RuntimeTarget
+) -> GeneratedCode:
     """The C# for every entry's type; a problem is shown at the entry that brings it in."""
     options = Options(manifest.ros, manifest.include_shipped, manifest.namespace)
     specs = [spec for _, spec in entries]
     try:
-        return generate(registry, specs, options)
+        return target.classes(registry, specs, options)
     except LocatedError:
         raise  # it points into the interface file at fault
     except UserError as error:
@@ -180,7 +146,7 @@ def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> 
     # of the entries before it, make generation fail (a clash can take two entries).
     for count, (item, _) in enumerate(entries, start=1):
         try:
-            generate(registry, specs[:count], options)
+            target.classes(registry, specs[:count], options)
         except UserError as error:
             failure, where = error, item.locations.of("type")
             break
@@ -192,62 +158,6 @@ def _generate(manifest: Manifest, registry: Registry, entries: list[_Entry]) -> 
     if where is None:  # no entries: only the types every generation needs
         raise UserError(failure.message, hint=hint)
     raise LocatedError.at(where, failure.message, hint=hint)
-
-
-def _view(
-    manifest: Manifest,
-    item: Entry,
-    spec: MessageSpec | ServiceSpec | ActionSpec,
-    messages: GeneratedCode,
-) -> Script:
-    common = {
-        "class_name": item.class_name,
-        "ros_type": spec.full_name,
-        "manifest": manifest.path.name,
-    }
-    if isinstance(item, Topic):
-        message = messages.message_class(spec.full_name).qualified
-        if item.direction is Direction.PUBLISH:
-            return PublisherScript(
-                **common, topic=item.name, message_type=message, rate=item.rate or 0.0
-            )
-        return SubscriberScript(
-            **common,
-            topic=item.name,
-            message_type=message,
-            throttle=item.throttle or 0,
-            queue=item.queue or 1,
-        )
-    if isinstance(item, Action):
-        return _action_view(manifest, item, spec, messages)
-    classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
-    kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
-    return kind(
-        **common,
-        service=item.name,
-        request_type=classes[ClassRole.REQUEST].qualified,
-        response_type=classes[ClassRole.RESPONSE].qualified,
-    )
-
-
-def _action_view(
-    manifest: Manifest, item: Action, spec: Interface, messages: GeneratedCode
-) -> Script:
-    classes = messages.classes[f"{spec.package}/action/{spec.name}"]
-    kind = ActionClientScript if item.role is Role.CLIENT else ActionServerScript
-    return kind(
-        class_name=item.class_name,
-        ros_type=f"{spec.package}/action/{spec.name}",
-        manifest=manifest.path.name,
-        action=item.name,
-        ros2=manifest.ros is Dialect.ROS2,
-        goal_type=classes[ClassRole.GOAL].qualified,
-        result_type=classes[ClassRole.RESULT].qualified,
-        feedback_type=classes[ClassRole.FEEDBACK].qualified,
-        action_goal_type=classes[ClassRole.ACTION_GOAL].qualified,
-        action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
-        action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
-    )
 
 
 def _folder_metas(manifest: Manifest, folders: set[Path], salt: str) -> list[DesiredFile]:
@@ -277,7 +187,10 @@ def _script_guid(
 
 
 def _check_class_names(
-    manifest: Manifest, scripts: dict[str, ScriptInfo], moves: Moves | None
+    manifest: Manifest,
+    scripts: dict[str, ScriptInfo],
+    moves: Moves | None,
+    target: RuntimeTarget,
 ) -> None:
     """A generated script must not share its class name with ROS#'s or another script's:
     Unity and the manifest's ``components`` find scripts by that name. Scripts an earlier
@@ -292,8 +205,8 @@ def _check_class_names(
     items: tuple[Entry, ...] = (*manifest.topics, *manifest.services, *manifest.actions)
     for item in items:
         clash = (
-            "ROS#'s stock script"
-            if item.class_name in RESERVED_NAMES
+            f"{target.label}'s stock script"
+            if item.class_name in target.reserved_names
             else elsewhere.get(item.class_name)
         )
         if clash:
@@ -319,10 +232,11 @@ def plan_code(
 ) -> CodePlan:
     """Everything the manifest's topics, services and actions need in C#, as desired files; a
     script moved from an earlier output folder keeps its GUIDs (``moves``)."""
-    _check_class_names(manifest, scripts, moves)
+    target = target_for(manifest)
+    _check_class_names(manifest, scripts, moves, target)
     items = _resolve_all(manifest, registry)
-    _check_time_messages(manifest, registry, items)
-    messages = _generate(manifest, registry, items)
+    target.check(manifest, registry, items)
+    messages = _generate(manifest, registry, items, target)
     messages_dir = manifest.output_dir / "Messages"
     scripts_dir = manifest.output_dir / "Scripts"
     generated: list[DesiredFile] = []
@@ -332,7 +246,7 @@ def plan_code(
     planned: list[PlannedScript] = []
     known = {info.path: guid for guid, info in scripts.items()}
     for item, spec in items:
-        view = _view(manifest, item, spec, messages)
+        view = target.script_view(manifest, item, spec, messages)
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name
         guid = _script_guid(manifest, path, salt, moves, known)

@@ -34,6 +34,7 @@ from unityscaffold.apply._renames import follow
 from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.apply._robots import place_robots, remove_kept
 from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.apply._target import target_for
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
 from unityscaffold.manifest.model import (
     Action,
@@ -78,14 +79,16 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
             editor.keys.setdefault(slot, []).append(c.key)
     place_robots(ctx, editor, ctx.robots, lock)
     objects = _declare_objects(ctx, editor)
+    target = target_for(m)
     needs_connector = [
         c
         for c in entries
-        if (facts := ctx.facts(scripts[id(c)])) is not None and "RosConnector" in facts.requires
+        if (facts := ctx.facts(scripts[id(c)])) is not None
+        and target.connection_class in facts.requires
     ]
     connector_script = None
     if m.connector.scene == plan.relative or needs_connector:
-        connector_script = ctx.rossharp.script("RosConnector")
+        connector_script = target.connection_script(ctx.rossharp, m.project_root)
     connector_id = attach_connector(ctx, editor, connector_script)
     # connectors apply attached itself may be pruned; one that is not came from the user
     owned_ids = {c.file_id for c in lock.components if c.scene == plan.relative}

@@ -1,5 +1,5 @@
-"""Field values a scene plan writes: the RosConnector's settings, a Connector the user set by
-hand (kept), an entry's values checked against its script's class, and notes for the
+"""Field values a scene plan writes: a connection the user set by hand on a generated script
+(kept), an entry's values checked against its script's class, and notes for the
 ``[RequireComponent]``s Unity would have added."""
 
 from __future__ import annotations
@@ -9,33 +9,35 @@ from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._references import fits, paths_in, typed_reference, untyped_value
 from unityscaffold.apply._typed import typed_value
 from unityscaffold.errors import SourceLocation, UserError
-from unityscaffold.manifest.model import Component, Manifest, ObjectPath
-from unityscaffold.unity import Enum, SceneDocument, ScriptRef
+from unityscaffold.manifest.model import Component, ObjectPath
+from unityscaffold.unity import SceneDocument, ScriptRef
 from unityscaffold.unity.catalog import CatalogScript
 from unityscaffold.unity.values import FieldValue
 
-__all__ = ["catalog_values", "connector_fields", "hand_set_connector", "requirements"]
+__all__ = ["catalog_values", "hand_set_connector", "requirements"]
 
 
 def hand_set_connector(
     doc: SceneDocument,
     path: str,
-    script: ScriptRef,
+    script_field: tuple[ScriptRef, str],
     connector: ScriptRef | None,
     recorded: set[int],
 ) -> int:
-    """The RosConnector a generated script's ``Connector`` was pointed at in Unity, to keep:
-    a scene with two connectors (two robots, say) chooses per script. 0 when there is no such
-    choice (no component yet, an empty field, a field that is not a RosConnector, or one apply
-    attached itself, which follows the manifest's ``connector``)."""
+    """The connection (RosConnector, ROSConnection) a generated script's connection field was
+    pointed at in Unity, to keep: a scene with two connectors (two robots, say) chooses per
+    script. 0 when there is no such choice (no component yet, an empty field, a field that is
+    not such a connection, or one apply attached itself, which follows the manifest's
+    ``connector``)."""
     if connector is None:
         return 0
+    script, field = script_field  # the generated script and its connection field
     try:
         go = doc.find_gameobject(path)
     except UserError:
         return 0
     component = doc.find_component(go, script.guid, script.file_id)
-    value = doc.field(component, "Connector") if component is not None else None
+    value = doc.field(component, field) if component is not None else None
     target = value.get("fileID") if isinstance(value, dict) else None
     if not isinstance(target, str) or not target.lstrip("-").isdigit() or target == "0":
         return 0
@@ -46,17 +48,6 @@ def hand_set_connector(
     if found is None or found.guid != connector.guid or int(target) in recorded:
         return 0
     return int(target)
-
-
-def connector_fields(manifest: Manifest) -> list[tuple[str, FieldValue]]:
-    c = manifest.connector
-    return [
-        ("selectedRosVersion", Enum(int(manifest.ros) - 1)),
-        ("SecondsTimeout", int(c.timeout)),
-        ("Serializer", Enum(int(c.serializer))),
-        ("protocol", Enum(int(c.protocol))),
-        ("RosBridgeServerUrl", c.url),
-    ]
 
 
 def catalog_values(

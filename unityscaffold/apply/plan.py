@@ -29,6 +29,7 @@ from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
 from unityscaffold.apply._scriptmetas import plan_script_metas
 from unityscaffold.apply._settings import with_ros_define
+from unityscaffold.apply._target import target_for
 from unityscaffold.apply._userfiles import plan_user_files
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.fileout import (
@@ -168,7 +169,8 @@ def make_plan(
     # Temporary files may sit beside any file apply writes: scenes, settings, generated files.
     beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
     deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside)
-    notes = [*rossharp.notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
+    target_notes = target_for(manifest).notes(project, rossharp)
+    notes = [*target_notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
     notes += [s.warning for s in code.messages.skipped if s.warning]
     new_lock = LockFile(
         files={

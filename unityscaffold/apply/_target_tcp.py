@@ -1,0 +1,153 @@
+"""The ROS-TCP-Connector runtime for apply: its classes, its scripts' views (``scripts_tcp``)
+and its ``ROSConnection`` in the scene."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from unityscaffold.apply import _tcpconnector as package
+from unityscaffold.apply._rossharp import RESERVED_NAMES as ROSSHARP_NAMES
+from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.codegen import ClassRole, GeneratedCode, Options
+from unityscaffold.codegen.naming import CsClass, namespace_segment
+from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX
+from unityscaffold.codegen.scripts import Script
+from unityscaffold.codegen.scripts_tcp import (
+    CONNECTION_FIELD,
+    DEFAULT_QUEUE,
+    TcpActionClientScript,
+    TcpActionServerScript,
+    TcpPublisherScript,
+    TcpServiceClientScript,
+    TcpServiceServerScript,
+    TcpSubscriberScript,
+)
+from unityscaffold.interfaces.model import ActionSpec, Interface, MessageSpec, ServiceSpec
+from unityscaffold.interfaces.registry import Registry
+from unityscaffold.manifest.model import Action, Direction, Manifest, Role, Service, Topic
+from unityscaffold.manifest.runtime import TcpConnection
+from unityscaffold.unity import ScriptRef
+from unityscaffold.unity.values import FieldValue
+
+__all__ = ["TcpConnectorTarget"]
+
+Entry = Topic | Service | Action
+
+
+def _message_class(package_name: str, name: str) -> CsClass:
+    """The connector's class of a message: ``RosMessageTypes.<Ns>.<Name>Msg``."""
+    return CsClass(
+        f"RosMessageTypes.{namespace_segment(package_name)}", name[:1].upper() + name[1:] + "Msg"
+    )
+
+
+def _connector_classes(roots: Sequence[Interface]) -> GeneratedCode:
+    """The connector's names for ``roots``, for the classes its package ships (referenced,
+    never generated). Generating the others is the connector's class generator's job."""
+    classes: dict[str, dict[ClassRole, CsClass]] = {}
+    for spec in roots:
+        ns = f"RosMessageTypes.{namespace_segment(spec.package)}"
+        if isinstance(spec, MessageSpec):
+            classes[spec.full_name] = {ClassRole.MESSAGE: _message_class(spec.package, spec.name)}
+        elif isinstance(spec, ServiceSpec):
+            classes[f"{spec.package}/srv/{spec.name}"] = {
+                role: CsClass(ns, spec.name + CLASS_SUFFIX[role])
+                for role in (ClassRole.REQUEST, ClassRole.RESPONSE)
+            }
+        elif isinstance(spec, ActionSpec):
+            classes[f"{spec.package}/action/{spec.name}"] = {
+                role: CsClass(ns, spec.name + CLASS_SUFFIX[role]) for role in ACTION_ROLES
+            }
+    return GeneratedCode((), (), classes)
+
+
+class TcpConnectorTarget:
+    """Unity's ROS-TCP-Connector: ``ROSConnection`` and the ``tcpconnector/`` templates."""
+
+    label = "ROS-TCP-Connector"
+    connection_field = CONNECTION_FIELD
+    connection_class = "ROSConnection"
+    # ROS#'s names stay taken: a project may hold both packages, and its scenes ROS#'s scripts
+    reserved_names = package.RESERVED_NAMES | ROSSHARP_NAMES
+
+    def classes(
+        self, registry: Registry, roots: Sequence[Interface], options: Options
+    ) -> GeneratedCode:
+        return _connector_classes(roots)
+
+    def check(
+        self, manifest: Manifest, registry: Registry, entries: Sequence[tuple[Entry, Interface]]
+    ) -> None:
+        """Nothing beyond the manifest's own checks (ROS 2 actions are refused there)."""
+
+    def script_view(
+        self, manifest: Manifest, item: Entry, spec: Interface, messages: GeneratedCode
+    ) -> Script:
+        common = {
+            "class_name": item.class_name,
+            "ros_type": spec.full_name,
+            "manifest": manifest.path.name,
+        }
+        if isinstance(item, Topic):
+            message = messages.message_class(spec.full_name).qualified
+            if item.direction is Direction.PUBLISH:
+                return TcpPublisherScript(
+                    **common,
+                    topic=item.name,
+                    message_type=message,
+                    rate=item.rate or 0.0,
+                    queue=item.queue or DEFAULT_QUEUE,
+                    latch=bool(item.latch),
+                )
+            return TcpSubscriberScript(
+                class_name=item.class_name,
+                ros_type=spec.full_name,
+                manifest=manifest.path.name,
+                topic=item.name,
+                message_type=message,
+            )
+        if isinstance(item, Action):
+            classes = messages.classes[f"{spec.package}/action/{spec.name}"]
+            action = TcpActionClientScript if item.role is Role.CLIENT else TcpActionServerScript
+            return action(
+                class_name=item.class_name,
+                ros_type=f"{spec.package}/action/{spec.name}",
+                manifest=manifest.path.name,
+                action=item.name,
+                goal_type=classes[ClassRole.GOAL].qualified,
+                result_type=classes[ClassRole.RESULT].qualified,
+                feedback_type=classes[ClassRole.FEEDBACK].qualified,
+                action_goal_type=classes[ClassRole.ACTION_GOAL].qualified,
+                action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
+                action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
+            )
+        classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
+        kind = TcpServiceClientScript if item.role is Role.CLIENT else TcpServiceServerScript
+        return kind(
+            **common,
+            service=item.name,
+            request_type=classes[ClassRole.REQUEST].qualified,
+            response_type=classes[ClassRole.RESPONSE].qualified,
+        )
+
+    def connection_fields(self, manifest: Manifest) -> list[tuple[str, FieldValue]]:
+        """ROSConnection's serialized fields, in its declaration order (v0.7)."""
+        c = manifest.connector.tcp or TcpConnection()
+        return [
+            ("m_RosIPAddress", c.host),
+            ("m_RosPort", int(c.port)),
+            ("m_ConnectOnStart", bool(c.connect_on_start)),
+            ("m_KeepaliveTime", float(c.keepalive)),
+            ("m_NetworkTimeoutSeconds", float(c.network_timeout)),
+            ("m_SleepTimeSeconds", float(c.sleep)),
+            ("m_ShowHUD", bool(c.show_hud)),
+            ("m_TFTopics", tuple(c.tf_topics)),
+            ("listenForTFMessages", bool(c.listen_for_tf)),
+        ]
+
+    def connection_script(self, rossharp: RosSharp, project: Path) -> ScriptRef:
+        return package.connection_script(project)
+
+    def notes(self, project: Path, rossharp: RosSharp) -> tuple[str, ...]:
+        return package.pin_notes(project)
