@@ -50,9 +50,12 @@ def compile_cs(
     references: tuple[Path, ...] = (),
     defines: tuple[str, ...] = (),
     extra: tuple[str, ...] = (),
+    strict: bool = True,
 ) -> Compiled:
-    """``extra`` flags come after the common ones (a ``-nowarn`` for third-party sources)."""
-    args = [mcs, *MCS_FLAGS, *extra, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
+    """``extra`` flags come after the common ones (a ``-nowarn`` for third-party sources);
+    ``strict=False`` drops warnings-as-errors, for third-party sources only."""
+    flags = MCS_FLAGS if strict else tuple(f for f in MCS_FLAGS if f != "-warnaserror+")
+    args = [mcs, *flags, *extra, f"-out:{out}", f"-doc:{out.with_suffix('.xml')}"]
     if ros2:
         args.append("-define:ROS2")
     args += [f"-define:{name}" for name in defines]

@@ -65,7 +65,7 @@ def pin_notes(project: Path) -> tuple[str, ...]:
     spec = _pinned(project)
     if spec is None:
         return (
-            f"note: Packages/manifest.json does not list {PACKAGE}; add "
+            f"Packages/manifest.json does not list {PACKAGE}; add "
             f'"{PACKAGE}": "{PACKAGE_URL}" to its dependencies (scaffold init --runtime '
             "ros-tcp-connector does this), or the generated scripts will not compile",
         )
@@ -73,7 +73,7 @@ def pin_notes(project: Path) -> tuple[str, ...]:
     version = found.group(1) if found else spec
     if version not in _SUPPORTED:
         return (
-            f"note: Packages/manifest.json pins {PACKAGE} {version}; the generated scripts "
+            f"Packages/manifest.json pins {PACKAGE} {version}; the generated scripts "
             f"are made for {' and '.join(_SUPPORTED)} (its ROSConnection and the endpoint's "
             "protocol change between minor releases): pin #" + DEFAULT_TAG,
         )

@@ -13,12 +13,17 @@ from __future__ import annotations
 import hashlib
 import json
 from pathlib import Path
+from typing import Any
 
 from unityscaffold.apply._inside import check_inside
 from unityscaffold.apply._rossharp import DEFAULT_VERSION
+from unityscaffold.apply._rossharp import PACKAGE as ROSSHARP
+from unityscaffold.apply._tcpconnector import PACKAGE as TCP_PACKAGE
+from unityscaffold.apply._tcpconnector import PACKAGE_URL as TCP_PACKAGE_URL
 from unityscaffold.errors import UserError
 from unityscaffold.fileout import DesiredFile, FileChange, plan_files, write_files
 from unityscaffold.manifest import starter_manifest
+from unityscaffold.manifest.runtime import Runtime
 from unityscaffold.resources import schema_text, template_environment, template_folder
 from unityscaffold.unity.meta import folder_meta, guid_for
 
@@ -70,7 +75,14 @@ def _scene_files(salt: str) -> list[tuple[str, bytes]]:
 
 
 _PACKAGES = "Packages/manifest.json"
-_ROSSHARP = "com.siemens.ros-sharp"
+#: The package each runtime needs, pinned by its UPM git URL.
+_RUNTIME_PACKAGE = {
+    Runtime.ROS_SHARP: (
+        ROSSHARP,
+        f"https://github.com/siemens/ros-sharp.git?path=/{ROSSHARP}#{DEFAULT_VERSION}",
+    ),
+    Runtime.TCP_CONNECTOR: (TCP_PACKAGE, TCP_PACKAGE_URL),
+}
 
 
 def _existing_scenes(directory: Path) -> list[str]:
@@ -81,10 +93,24 @@ def _existing_scenes(directory: Path) -> list[str]:
     return sorted(p.relative_to(directory).as_posix() for p in assets.rglob("*.unity"))
 
 
-def _pinned_packages(directory: Path, template: bytes) -> DesiredFile | None:
-    """An existing ``Packages/manifest.json`` with ROS# added, pinned as the template pins it;
-    None when there is none or it already names ROS# (its choice is kept)."""
+def _with_dependency(data: dict[str, Any], runtime: Runtime, *, first: bool = False) -> bytes:
+    """A package manifest with the runtime's package added: first (the template's place), or
+    where Unity, which keeps dependencies sorted, puts it in a manifest it wrote. Indented with
+    two spaces as Unity does, so its next save changes nothing."""
+    name, url = _RUNTIME_PACKAGE[runtime]
+    deps = data["dependencies"]
+    data["dependencies"] = (
+        {name: url, **deps} if first else dict(sorted({**deps, name: url}.items()))
+    )
+    return (json.dumps(data, indent=2, ensure_ascii=False) + "\n").encode()
+
+
+def _pinned_packages(directory: Path, runtime: Runtime) -> DesiredFile | None:
+    """An existing ``Packages/manifest.json`` with the runtime's package added, pinned as a new
+    project pins it; None when there is none or it already names that package (its choice is
+    kept)."""
     path = directory / _PACKAGES
+    name = _RUNTIME_PACKAGE[runtime][0]
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
@@ -92,23 +118,23 @@ def _pinned_packages(directory: Path, template: bytes) -> DesiredFile | None:
     except (OSError, ValueError) as exc:
         raise UserError(
             f"cannot read {path}: {exc}",
-            hint=f"fix it, or add {_ROSSHARP} to its dependencies yourself",
+            hint=f"fix it, or add {name} to its dependencies yourself",
         ) from None
     deps = data.get("dependencies") if isinstance(data, dict) else None
     if not isinstance(deps, dict):
         raise UserError(
             f"{path} has no 'dependencies' object", hint="Unity's package manifest needs one"
         )
-    if _ROSSHARP in deps:
+    if name in deps:
         return None
-    wanted = json.loads(template)["dependencies"][_ROSSHARP]
-    # Unity keeps dependencies sorted and indents with two spaces: its next save changes nothing
-    data["dependencies"] = dict(sorted({**deps, _ROSSHARP: wanted}.items()))
-    return DesiredFile(path, (json.dumps(data, indent=2, ensure_ascii=False) + "\n").encode())
+    return DesiredFile(path, _with_dependency(data, runtime))
 
 
-def init_project(directory: Path, ros: int, *, force: bool = False) -> list[FileChange]:
-    """Write a template Unity project into ``directory``; refuses a non-empty folder."""
+def init_project(
+    directory: Path, ros: int, *, force: bool = False, runtime: Runtime = Runtime.ROS_SHARP
+) -> list[FileChange]:
+    """Write a template Unity project into ``directory`` for ``runtime`` (its package pinned
+    in ``Packages/manifest.json``); refuses a non-empty folder."""
     if directory.exists() and not directory.is_dir():
         raise UserError(f"{directory} exists and is not a folder")
     if directory.is_dir() and any(directory.iterdir()) and not force:
@@ -121,19 +147,23 @@ def init_project(directory: Path, ros: int, *, force: bool = False) -> list[File
     context = {
         "product_name": name,
         "product_guid": hashlib.md5(f"unityscaffold-init:{name}".encode()).hexdigest(),
-        "rossharp_version": DEFAULT_VERSION,
     }
-    files = _template_files(context)
+    files = [
+        (rel, _with_dependency(json.loads(data), runtime, first=True) if rel == _PACKAGES else data)
+        for rel, data in _template_files(context)
+    ]
     scenes = _existing_scenes(directory)
     if scenes:  # --force into a project: its scenes are the ones to wire, add none
         files = [(rel, data) for rel, data in files if not rel.startswith(MAIN_SCENE)]
     else:
         files += _scene_files(context["product_guid"])
     desired = [DesiredFile(directory / rel, data, create_only=True) for rel, data in files]
-    pin = _pinned_packages(directory, dict(files)[_PACKAGES])
+    pin = _pinned_packages(directory, runtime)
     if pin is not None:
         desired = [d for d in desired if d.path != pin.path] + [pin]
-    manifest = starter_manifest(ros, scenes[0] if scenes else MAIN_SCENE, schema=SCHEMA_FILE)
+    manifest = starter_manifest(
+        ros, scenes[0] if scenes else MAIN_SCENE, schema=SCHEMA_FILE, runtime=runtime
+    )
     desired.append(
         DesiredFile(directory / "robot.yaml", manifest.encode("utf-8"), create_only=True)
     )

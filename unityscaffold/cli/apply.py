@@ -170,26 +170,45 @@ def register(app: typer.Typer) -> None:
     def init_command(
         directory: Path = typer.Argument(..., metavar="DIR", help="Folder for the new project."),
         ros: int = typer.Option(2, "--ros", metavar="1|2", help="ROS version of the robot."),
+        runtime: str = typer.Option(
+            "ros-sharp",
+            "--runtime",
+            metavar="ros-sharp|ros-tcp-connector",
+            help="The Unity library to talk to ROS through: Siemens' ROS# (rosbridge) or "
+            "Unity's ROS-TCP-Connector (ROS-TCP-Endpoint); its package is pinned in "
+            "Packages/manifest.json and the manifest says `runtime:`.",
+        ),
         force: bool = typer.Option(
             False,
             "--force",
             help="Add the template to a non-empty folder (keeps existing files; in an existing "
-            "project, adds ROS# to Packages/manifest.json and uses its first scene).",
+            "project, adds the runtime's package to Packages/manifest.json and uses its first "
+            "scene).",
         ),
     ) -> None:
-        """Create a template Unity project (2022.3, ROS# pinned) with a starter robot.yaml.
+        """Create a template Unity project (2022.3, ROS# or ROS-TCP-Connector pinned) with a
+        starter robot.yaml.
 
         Examples:
 
           scaffold init my_robot
 
           scaffold init my_robot --ros 1
-        """
-        if ros not in (1, 2):
-            from unityscaffold.errors import UserError
 
+          scaffold init my_robot --ros 1 --runtime ros-tcp-connector
+        """
+        from unityscaffold.errors import UserError
+        from unityscaffold.manifest.runtime import Runtime
+
+        if ros not in (1, 2):
             raise UserError(f"--ros must be 1 or 2, not {ros}")
-        changes = init_project(directory, ros, force=force)
+        choices = [r.value for r in Runtime]
+        if runtime not in choices:
+            raise UserError(
+                f"--runtime must be {' or '.join(choices)}, not {runtime}",
+                hint="ros-sharp is Siemens' ROS#; ros-tcp-connector is Unity's ROS-TCP-Connector",
+            )
+        changes = init_project(directory, ros, force=force, runtime=Runtime(runtime))
         created = sum(1 for c in changes if c.writes)
         typer.echo(
             f"created {created} files in {directory}; next: scaffold apply "

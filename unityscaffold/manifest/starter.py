@@ -6,6 +6,7 @@ import string
 
 from unityscaffold.errors import UserError
 from unityscaffold.manifest.model import MANIFEST_VERSION
+from unityscaffold.manifest.runtime import Runtime
 
 __all__ = ["starter_manifest"]
 
@@ -14,7 +15,7 @@ ${modeline}# unityscaffold manifest: run `scaffold apply robot.yaml` after editi
 # Every key is described in unityscaffold's docs/manifest.md and by `scaffold schema`.
 version: ${version}
 ros: ${ros}                 # ROS version of the robot: 1 or 2
-project: .              # the Unity project root, relative to this file
+${runtime}project: .              # the Unity project root, relative to this file
 output: Assets/RosGenerated
 scene: ${scene}
 
@@ -22,31 +23,19 @@ scene: ${scene}
 # interfaces:
 #   - ../robot_ws/src
 
-connector:              # ROS#'s RosConnector, created if missing
-  gameobject: RosConnector
-  url: ws://localhost:9090
-  timeout: 10           # seconds
-  serializer: microsoft # or newtonsoft
-  protocol: websocket-sharp  # or websocket-net
-
-# Each entry: name, type, direction (publish: Unity sends; subscribe: Unity receives),
-# optional rate (Hz, publish), throttle (ms) and queue (subscribe), gameobject, scene.
+${connector}
 topics:
 #  - {name: /cmd_vel, type: geometry_msgs/Twist, direction: publish, rate: 10}
-#  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, throttle: 100,
-#    gameobject: Robot/base_link}
-
+${topic_example}
 # Each entry: name, type, role (client: Unity calls it; server: Unity provides it).
 services:
 #  - {name: /reset, type: std_srvs/Trigger, role: client}
 
 ${actions}
-# Existing MonoBehaviours (yours, ROS#'s or uGUI's) with field values; "@Path/To/Object"
+# Existing MonoBehaviours (yours, ${packages} or uGUI's) with field values; "@Path/To/Object"
 # refers to a GameObject in the same scene. Add `id:` to have two of one script on one object.
 components:
-#  - script: TwistSubscriber
-#    gameobject: RosConnector
-#    fields: {Topic: /cmd_vel_unity, SubscribedTransform: "@Robot/base_link"}
+${component_example}
 
 # GameObjects created if missing and kept as written: position, rotation (Euler degrees),
 # scale, active, tag, layer, ui (RectTransform), primitive (plane, cube: as Unity's
@@ -93,7 +82,56 @@ actions:
 }
 
 
-def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
+_CONNECTOR = {
+    Runtime.ROS_SHARP: """\
+connector:              # ROS#'s RosConnector, created if missing
+  gameobject: RosConnector
+  url: ws://localhost:9090
+  timeout: 10           # seconds
+  serializer: microsoft # or newtonsoft
+  protocol: websocket-sharp  # or websocket-net
+
+# Each entry: name, type, direction (publish: Unity sends; subscribe: Unity receives),
+# optional rate (Hz, publish), throttle (ms) and queue (subscribe), gameobject, scene.""",
+    Runtime.TCP_CONNECTOR: """\
+connector:              # ROS-TCP-Connector's ROSConnection, created if missing
+  gameobject: ROSConnection
+  host: 127.0.0.1       # where ROS-TCP-Endpoint runs (ros_tcp_endpoint's tcp_ip)
+  port: 10000
+  show_hud: true
+
+# Each entry: name, type, direction (publish: Unity sends; subscribe: Unity receives),
+# optional rate (Hz), queue (the ROS publisher's queue size) and latch (publish),
+# gameobject, scene.""",
+}
+_TOPIC_EXAMPLE = {
+    Runtime.ROS_SHARP: """\
+#  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, throttle: 100,
+#    gameobject: Robot/base_link}
+""",
+    Runtime.TCP_CONNECTOR: """\
+#  - {name: /odom, type: nav_msgs/Odometry, direction: subscribe, gameobject: Robot/base_link}
+""",
+}
+_COMPONENT_EXAMPLE = {
+    Runtime.ROS_SHARP: """\
+#  - script: TwistSubscriber
+#    gameobject: RosConnector
+#    fields: {Topic: /cmd_vel_unity, SubscribedTransform: "@Robot/base_link"}""",
+    Runtime.TCP_CONNECTOR: """\
+#  - script: Assets/Scripts/Lidar.cs
+#    gameobject: Robot/base_link
+#    fields: {Range: 12.5, Target: "@Robot/Target"}""",
+}
+_NO_ACTIONS = """\
+# ROS 2 actions cannot pass through ROS-TCP-Endpoint (it carries messages and services
+# only); use runtime: ros-sharp for them.
+"""
+
+
+def starter_manifest(
+    ros: int, scene: str, *, schema: str | None = None, runtime: Runtime = Runtime.ROS_SHARP
+) -> str:
     """A small, valid, commented manifest for a robot on ROS ``ros`` with one ``scene``.
 
     ``scene`` is the project-relative scene file, e.g. ``Assets/Scenes/Main.unity``. With
@@ -114,6 +152,16 @@ def starter_manifest(ros: int, scene: str, *, schema: str | None = None) -> str:
         if schema
         else ""
     )
+    tcp = runtime is Runtime.TCP_CONNECTOR
     return _TEMPLATE.substitute(
-        version=MANIFEST_VERSION, ros=ros, scene=scene, modeline=modeline, actions=_ACTIONS[ros]
+        version=MANIFEST_VERSION,
+        ros=ros,
+        runtime=f"runtime: {runtime.value}  # or ros-sharp\n" if tcp else "",
+        scene=scene,
+        modeline=modeline,
+        connector=_CONNECTOR[runtime],
+        topic_example=_TOPIC_EXAMPLE[runtime],
+        component_example=_COMPONENT_EXAMPLE[runtime],
+        packages="a package's" if tcp else "ROS#'s",
+        actions=_NO_ACTIONS if tcp and ros == 2 else _ACTIONS[ros],
     )

@@ -13,6 +13,9 @@ namespace UnityEngine
 #endif
         public static T FindObjectOfType<T>() where T : Object { return null; }
         public static T FindAnyObjectByType<T>() where T : Object { return null; }
+        public static T Instantiate<T>(T original) where T : Object { return original; }
+        public static void Destroy(Object obj) { }
+        public static void DontDestroyOnLoad(Object target) { }
         public static implicit operator bool(Object exists) { return !ReferenceEquals(exists, null); }
     }
 
@@ -26,13 +29,18 @@ namespace UnityEngine
     public class Behaviour : Component
     {
         public bool enabled { get; set; }
+        public bool isActiveAndEnabled { get { return enabled; } }
     }
 
     public class MonoBehaviour : Behaviour { }
 
     public sealed class GameObject : Object
     {
+        public GameObject() { }
+        public GameObject(string name) { this.name = name; }
+        public SceneManagement.Scene scene { get { return new SceneManagement.Scene(); } }
         public T GetComponent<T>() { return default(T); }
+        public T AddComponent<T>() where T : Component { return null; }
     }
 
     public class Transform : Component { }
@@ -52,6 +60,7 @@ namespace UnityEngine
         public static void LogWarning(object message, Object context) { }
         public static void LogError(object message) { }
         public static void LogError(object message, Object context) { }
+        public static void LogException(Exception exception) { }
     }
 
     [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
@@ -91,5 +100,16 @@ namespace UnityEngine
     public sealed class MinAttribute : PropertyAttribute
     {
         public MinAttribute(float min) { }
+    }
+
+    [AttributeUsage(AttributeTargets.Method)]
+    public sealed class RuntimeInitializeOnLoadMethodAttribute : Attribute { }
+}
+
+namespace UnityEngine.SceneManagement
+{
+    public struct Scene
+    {
+        public string name { get { return null; } }
     }
 }
