@@ -8,7 +8,7 @@ import shutil
 from pathlib import Path
 
 import pytest
-from connector_csharp import PACKAGE, compile_with_connector, connector
+from connector_csharp import compile_with_connector, connector
 from helpers import assert_same_tree, run_cli, updating
 
 from unityscaffold.apply._tcpconnector import CONNECTION_GUID, PACKAGE_URL
