@@ -19,12 +19,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from csharp import MCS_FLAGS, Compiled, compile_cs
-from helpers import require
+
+from tests.codegen.rostcp.tcp_helpers import connector_package
 
 REPO = Path(__file__).resolve().parent.parent
 STUBS = REPO / "tests" / "apply" / "stubs"
-CONNECTOR = REPO.parent / "shared" / "vendor" / "ros-tcp-connector" / "0.7.0"
-PACKAGE = CONNECTOR / "com.unity.robotics.ros-tcp-connector"
 _TUPLE_LINE = "(string topic, byte[] contents) = data;"
 _TF_STAND_IN = """\
 namespace Unity.Robotics.ROSTCPConnector
@@ -36,13 +35,12 @@ namespace Unity.Robotics.ROSTCPConnector
 }
 """
 
-__all__ = ["MCS_FLAGS", "PACKAGE", "compile_connector", "compile_with_connector", "connector"]
+__all__ = ["MCS_FLAGS", "compile_connector", "compile_with_connector", "connector"]
 
 
 def connector() -> Path:
     """The vendored package (skipped locally, failed in CI when missing)."""
-    require(PACKAGE.is_dir(), f"ROS-TCP-Connector's package at {PACKAGE}")
-    return PACKAGE
+    return connector_package()
 
 
 def _tcp_sources(out: Path) -> list[Path]:

@@ -14,6 +14,7 @@ from helpers import assert_same_tree, run_cli, updating
 from unityscaffold.apply._tcpconnector import CONNECTION_GUID, PACKAGE_URL
 from unityscaffold.unity.meta import read_meta_guid
 
+REPO = Path(__file__).resolve().parents[2]
 GOLDEN = Path(__file__).parent / "golden" / "tcpconnector"
 
 MANIFEST = """\
@@ -23,17 +24,23 @@ runtime: ros-tcp-connector
 scene: Assets/Scenes/Main.unity
 connector: {{host: 192.168.1.10, port: 10001, show_hud: false, keepalive: 0.5,
             tf_topics: [/tf, /tf_static]}}
+interfaces: [ws]
 topics:
   - {{name: /chatter, type: std_msgs/String, direction: publish, rate: 2, queue: 1, latch: true}}
   - {{name: /echo, type: std_msgs/String, direction: subscribe, gameobject: Robot}}
+  - {{name: /base_status, type: diffbot_msgs/BaseStatus, direction: subscribe}}
 services:
   - {{name: /trigger, type: std_srvs/Trigger, role: client}}
   - {{name: /set, type: std_srvs/SetBool, role: server, gameobject: Robot}}
+  - {{name: /speed_limit, type: diffbot_msgs/SetSpeedLimit, role: client}}
 {actions}"""
+# a shipped action (nav_msgs) and a generated one (the sample's diffbot_msgs)
 ROS1_ACTIONS = """\
 actions:
   - {name: /map, type: nav_msgs/action/GetMap, role: client}
   - {name: /sim/map, type: nav_msgs/action/GetMap, role: server, gameobject: Robot}
+  - {name: /dock, type: diffbot_msgs/action/Dock, role: client, gameobject: Robot}
+  - {name: /sim/dock, type: diffbot_msgs/action/Dock, role: server, gameobject: Robot}
 """
 
 
@@ -50,6 +57,10 @@ services:
 """
 
 
+ROS1_TOPIC = "{name: /base_status, type: diffbot_msgs/BaseStatus, direction: subscribe}"
+ROS2_TOPIC = "{name: /pantry, type: tcp_test_msgs/msg/Pantry, direction: publish}"
+
+
 def _init(tmp_path: Path, ros: int, runtime: str = "ros-tcp-connector") -> Path:
     project = tmp_path / f"ros{ros}"
     done = run_cli("init", str(project), "--ros", str(ros), "--runtime", runtime)
@@ -59,19 +70,39 @@ def _init(tmp_path: Path, ros: int, runtime: str = "ros-tcp-connector") -> Path:
 
 def _applied(tmp_path: Path, ros: int) -> Path:
     project = _init(tmp_path, ros)
-    actions = ROS1_ACTIONS if ros == 1 else ""
-    (project / "robot.yaml").write_text(MANIFEST.format(ros=ros, actions=actions))
+    if ros == 1:  # the sample's package is written for ROS 1
+        shutil.copytree(REPO / "sample_project" / "ros_ws" / "src", project / "ws")
+        text = MANIFEST.format(ros=ros, actions=ROS1_ACTIONS)
+    else:  # the connector generator's own ROS 2 test package
+        shutil.copytree(REPO / "tests" / "codegen" / "rostcp" / "data" / "ros2", project / "ws")
+        text = MANIFEST.format(ros=ros, actions="").replace(ROS1_TOPIC, ROS2_TOPIC)
+        text = _without_sample(text, folder=True)
+    (project / "robot.yaml").write_text(text)
     done = run_cli("apply", str(project / "robot.yaml"))
     assert done.code == 0, done.err
     assert "add ROSConnection to ROSConnection" in done.out
     assert "add EchoSubscriber to Robot" in done.out
-    assert "note:" not in done.out + done.err  # the package is pinned as the scripts need
+    assert "Packages/manifest.json" not in done.out + done.err  # pinned as the scripts need
     assert run_cli("apply", "--check", str(project / "robot.yaml")).code == 0
     return project
 
 
+def _without_sample(text: str, *, folder: bool = False) -> str:
+    """``text`` without the sample package's entries (and its folder, unless ``folder``)."""
+    return "".join(
+        line
+        for line in text.splitlines(keepends=True)
+        if "diffbot" not in line and (folder or "[ws]" not in line)
+    )
+
+
 def _scripts(project: Path) -> list[Path]:
     return sorted((project / "Assets" / "RosGenerated" / "Scripts").glob("*.cs"))
+
+
+def _generated(project: Path) -> list[Path]:
+    """Every generated C# file: the message classes and the scripts with their user halves."""
+    return sorted((project / "Assets" / "RosGenerated").rglob("*.cs"))
 
 
 def test_init_pins_the_connector_package_and_writes_a_starter_for_it(tmp_path: Path) -> None:
@@ -126,7 +157,7 @@ def test_the_scene_gets_one_rosconnection_with_the_manifests_settings(tmp_path: 
         "  listenForTFMessages: 1",
     ]
     # each generated script points at it through its Connection field
-    assert scene.count("  Connection: {fileID: ") == 6 and "  Connector: " not in scene
+    assert scene.count("  Connection: {fileID: ") == 10 and "  Connector: " not in scene
 
 
 def test_the_rosconnection_guid_is_the_vendored_packages() -> None:
@@ -139,7 +170,8 @@ def test_connector_scripts_compile_against_the_vendored_connector(
     mcs: str, tmp_path: Path, ros: int
 ) -> None:
     project = _applied(tmp_path, ros)
-    compiled = compile_with_connector(mcs, _scripts(project), tmp_path / "build", ros2=ros == 2)
+    assert any("Messages" in p.parts for p in _generated(project))
+    compiled = compile_with_connector(mcs, _generated(project), tmp_path / "build", ros2=ros == 2)
     compiled.assert_clean()
 
 
@@ -161,7 +193,7 @@ def _apply(project: Path) -> str:
 
 def test_switching_runtime_back_and_forth_converges_with_check_clean(tmp_path: Path) -> None:
     project = _init(tmp_path, 1, "ros-sharp")
-    tcp = MANIFEST.format(ros=1, actions="")
+    tcp = _without_sample(MANIFEST.format(ros=1, actions=""))
     sharp = SHARP_MANIFEST
     manifest = project / "robot.yaml"
     manifest.write_text(sharp)

@@ -298,6 +298,8 @@ TCP_VARIANTS: list[tuple[int, str, Any]] = [
     (1, "connector.tf_topics", ["/tf", "/tf_static"]),
     (1, "connector.tf_topics", ["tf//x"]),
     (1, "connector.listen_for_tf", False),
+    (1, "include_shipped", True),
+    (1, "include_shipped", False),
     (1, "topics.0.queue", 1),
     (1, "topics.0.latch", True),
     (1, "topics.0.latch", 1),

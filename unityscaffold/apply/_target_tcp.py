@@ -9,9 +9,7 @@ from pathlib import Path
 from unityscaffold.apply import _tcpconnector as package
 from unityscaffold.apply._rossharp import RESERVED_NAMES as ROSSHARP_NAMES
 from unityscaffold.apply._rossharp import RosSharp
-from unityscaffold.codegen import ClassRole, GeneratedCode, Options
-from unityscaffold.codegen.naming import CsClass, namespace_segment
-from unityscaffold.codegen.roles import ACTION_ROLES, CLASS_SUFFIX
+from unityscaffold.codegen import ClassRole, GeneratedCode, Options, rostcp
 from unityscaffold.codegen.scripts import Script
 from unityscaffold.codegen.scripts_tcp import (
     CONNECTION_FIELD,
@@ -23,7 +21,7 @@ from unityscaffold.codegen.scripts_tcp import (
     TcpServiceServerScript,
     TcpSubscriberScript,
 )
-from unityscaffold.interfaces.model import ActionSpec, Interface, MessageSpec, ServiceSpec
+from unityscaffold.interfaces.model import Interface
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Action, Direction, Manifest, Role, Service, Topic
 from unityscaffold.manifest.runtime import TcpConnection
@@ -33,33 +31,6 @@ from unityscaffold.unity.values import FieldValue
 __all__ = ["TcpConnectorTarget"]
 
 Entry = Topic | Service | Action
-
-
-def _message_class(package_name: str, name: str) -> CsClass:
-    """The connector's class of a message: ``RosMessageTypes.<Ns>.<Name>Msg``."""
-    return CsClass(
-        f"RosMessageTypes.{namespace_segment(package_name)}", name[:1].upper() + name[1:] + "Msg"
-    )
-
-
-def _connector_classes(roots: Sequence[Interface]) -> GeneratedCode:
-    """The connector's names for ``roots``, for the classes its package ships (referenced,
-    never generated). Generating the others is the connector's class generator's job."""
-    classes: dict[str, dict[ClassRole, CsClass]] = {}
-    for spec in roots:
-        ns = f"RosMessageTypes.{namespace_segment(spec.package)}"
-        if isinstance(spec, MessageSpec):
-            classes[spec.full_name] = {ClassRole.MESSAGE: _message_class(spec.package, spec.name)}
-        elif isinstance(spec, ServiceSpec):
-            classes[f"{spec.package}/srv/{spec.name}"] = {
-                role: CsClass(ns, spec.name + CLASS_SUFFIX[role])
-                for role in (ClassRole.REQUEST, ClassRole.RESPONSE)
-            }
-        elif isinstance(spec, ActionSpec):
-            classes[f"{spec.package}/action/{spec.name}"] = {
-                role: CsClass(ns, spec.name + CLASS_SUFFIX[role]) for role in ACTION_ROLES
-            }
-    return GeneratedCode((), (), classes)
 
 
 class TcpConnectorTarget:
@@ -74,7 +45,7 @@ class TcpConnectorTarget:
     def classes(
         self, registry: Registry, roots: Sequence[Interface], options: Options
     ) -> GeneratedCode:
-        return _connector_classes(roots)
+        return rostcp.generate(registry, roots, options)
 
     def check(
         self, manifest: Manifest, registry: Registry, entries: Sequence[tuple[Entry, Interface]]

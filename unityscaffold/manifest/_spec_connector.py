@@ -207,13 +207,15 @@ def _topic_rule(direction: str, refused: tuple[str, ...]) -> dict[str, Any]:
 
 
 #: The top level's rules that depend on ``runtime``: which ``connector:`` section applies, the
-#: topic keys each runtime has, and no ROS 2 actions through ROS-TCP-Endpoint.
+#: topic keys each runtime has, no shipped classes generated again under the connector (its
+#: registry holds one class per ROS name), and no ROS 2 actions through ROS-TCP-Endpoint.
 RUNTIME_RULES: tuple[dict[str, Any], ...] = (
     {
         "if": _IS_TCP,
         "then": {
             "properties": {
                 "connector": {"anyOf": [ref(TCP_CONNECTOR.ref), {"type": "null"}]},
+                "include_shipped": {"const": False},
                 "topics": {
                     "items": {
                         "properties": {"throttle": False},

@@ -125,6 +125,15 @@ def _build(r: Reader, top: YMap, path: Path) -> Manifest | None:
     if version is None or ros is None:
         return None
     include = r.boolean(top, "include_shipped")
+    if include and runtime is Runtime.TCP_CONNECTOR:
+        r.error(
+            top.get("include_shipped").value.location,  # type: ignore[union-attr]
+            "include_shipped cannot be used with runtime: ros-tcp-connector: the connector "
+            "registers one class per ROS name, so a second class for a type it ships would "
+            "race its own",
+            hint="drop the key (the connector's shipped classes are used); `namespace:` puts "
+            "the generated classes under a root of your own",
+        )
     return Manifest(
         path=path,
         version=version,
