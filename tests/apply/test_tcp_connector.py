@@ -29,10 +29,12 @@ topics:
   - {{name: /chatter, type: std_msgs/String, direction: publish, rate: 2, queue: 1, latch: true}}
   - {{name: /echo, type: std_msgs/String, direction: subscribe, gameobject: Robot}}
   - {{name: /base_status, type: diffbot_msgs/BaseStatus, direction: subscribe}}
+  - {{name: /ping, type: std_msgs/Empty, direction: publish}}
 services:
   - {{name: /trigger, type: std_srvs/Trigger, role: client}}
   - {{name: /set, type: std_srvs/SetBool, role: server, gameobject: Robot}}
   - {{name: /speed_limit, type: diffbot_msgs/SetSpeedLimit, role: client}}
+  - {{name: /reset, type: std_srvs/Empty, role: server}}
 {actions}"""
 # a shipped action (nav_msgs) and a generated one (the sample's diffbot_msgs)
 ROS1_ACTIONS = """\
@@ -157,7 +159,7 @@ def test_the_scene_gets_one_rosconnection_with_the_manifests_settings(tmp_path: 
         "  listenForTFMessages: 1",
     ]
     # each generated script points at it through its Connection field
-    assert scene.count("  Connection: {fileID: ") == 10 and "  Connector: " not in scene
+    assert scene.count("  Connection: {fileID: ") == 12 and "  Connector: " not in scene
 
 
 def test_the_rosconnection_guid_is_the_vendored_packages() -> None:

@@ -21,7 +21,7 @@ from unityscaffold.codegen.scripts_tcp import (
     TcpServiceServerScript,
     TcpSubscriberScript,
 )
-from unityscaffold.interfaces.model import Interface
+from unityscaffold.interfaces.model import Dialect, Interface, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Action, Direction, Manifest, Role, Service, Topic
 from unityscaffold.manifest.runtime import TcpConnection
@@ -60,9 +60,11 @@ class TcpConnectorTarget:
             "ros_type": spec.full_name,
             "manifest": manifest.path.name,
         }
+        ros2 = manifest.ros is Dialect.ROS2
         if isinstance(item, Topic):
             message = messages.message_class(spec.full_name).qualified
             if item.direction is Direction.PUBLISH:
+                assert isinstance(spec, MessageSpec)
                 return TcpPublisherScript(
                     **common,
                     topic=item.name,
@@ -70,6 +72,7 @@ class TcpConnectorTarget:
                     rate=item.rate or 0.0,
                     queue=item.queue or DEFAULT_QUEUE,
                     latch=bool(item.latch),
+                    empty_cdr=ros2 and not spec.fields,
                 )
             return TcpSubscriberScript(
                 class_name=item.class_name,
@@ -93,13 +96,17 @@ class TcpConnectorTarget:
                 action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
                 action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
             )
+        assert isinstance(spec, ServiceSpec)
         classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
-        kind = TcpServiceClientScript if item.role is Role.CLIENT else TcpServiceServerScript
+        client = item.role is Role.CLIENT
+        kind = TcpServiceClientScript if client else TcpServiceServerScript
+        sent = spec.request if client else spec.response
         return kind(
             **common,
             service=item.name,
             request_type=classes[ClassRole.REQUEST].qualified,
             response_type=classes[ClassRole.RESPONSE].qualified,
+            empty_cdr=ros2 and not sent.fields,
         )
 
     def connection_fields(self, manifest: Manifest) -> list[tuple[str, FieldValue]]:

@@ -6,6 +6,13 @@ The same scripts as ``scripts`` (same class names, files, user halves and user A
 through a ``Connection`` field instead of ROS#'s RosConnector. ROSConnection calls back on
 Unity's main thread, so no hand-off queue is needed. Only ROS 1 actions exist here (actionlib
 over five topics): the connector's ROS 2 endpoint carries no actions.
+
+A ROS 2 message without fields is one byte in CDR; the connector's shipped classes for them
+(``std_msgs/Empty``, ``std_srvs/Trigger``'s request, ``std_srvs/Empty``) write none, and
+ROS-TCP-Endpoint's ROS 2 node cannot read that (a published message is dropped, a service
+request stops its service thread). Sending does not go through the connector's registry, so
+the scripts send such a message as a small unregistered class of their own that writes the one
+byte (``empty_cdr``), under ``#if ROS2``; receiving with the shipped class works as it is.
 """
 
 from __future__ import annotations
@@ -42,9 +49,12 @@ _DIR = "tcpconnector/scripts"
 
 @dataclass(frozen=True, slots=True)
 class TcpPublisherScript(PublisherScript):
+    """``empty_cdr``: a ROS 2 message without fields, sent as CDR's one byte (see the module)."""
+
     template: ClassVar[str] = f"{_DIR}/Publisher.cs.jinja"
     queue: int = DEFAULT_QUEUE
     latch: bool = False
+    empty_cdr: bool = False
 
     @property
     def latch_literal(self) -> str:
@@ -69,13 +79,19 @@ class TcpSubscriberScript(SubscriberScript):
 
 @dataclass(frozen=True, slots=True)
 class TcpServiceClientScript(ServiceClientScript):
+    """``empty_cdr``: a ROS 2 request without fields, sent as CDR's one byte."""
+
     template: ClassVar[str] = f"{_DIR}/ServiceClient.cs.jinja"
+    empty_cdr: bool = False
 
 
 @dataclass(frozen=True, slots=True)
 class TcpServiceServerScript(ServiceServerScript):
+    """``empty_cdr``: a ROS 2 response without fields, sent as CDR's one byte."""
+
     template: ClassVar[str] = f"{_DIR}/ServiceServer.cs.jinja"
     user_template: ClassVar[str] = f"{_DIR}/ServiceServerUser.cs.jinja"
+    empty_cdr: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -4,6 +4,7 @@
 // </auto-generated>
 using System.Collections.Generic;
 using Unity.Robotics.ROSTCPConnector;
+using Unity.Robotics.ROSTCPConnector.MessageGeneration;
 using UnityEngine;
 
 namespace RosGenerated
@@ -47,7 +48,11 @@ namespace RosGenerated
             if (Register())
             {
                 pending.Enqueue(Time.realtimeSinceStartup);
+#if ROS2
+                Connection.SendServiceMessage<global::RosMessageTypes.Std.TriggerResponse>(ServiceName, new EmptyCdr(global::RosMessageTypes.Std.TriggerRequest.k_RosMessageName), Receive);
+#else
                 Connection.SendServiceMessage<global::RosMessageTypes.Std.TriggerResponse>(ServiceName, request, Receive);
+#endif
             }
         }
 
@@ -86,5 +91,28 @@ namespace RosGenerated
             }
             return true;
         }
+
+#if ROS2
+        // ROS 2's CDR writes a message without fields as one byte; the connector's shipped
+        // classes for such messages write none, which ROS-TCP-Endpoint's ROS 2 node cannot read.
+        // Sending does not look the class up in the connector's registry, so this one, which
+        // writes the byte under the same ROS name, is sent in its place (never registered).
+        private sealed class EmptyCdr : Message
+        {
+            private readonly string rosMessageName;
+
+            public EmptyCdr(string rosMessageName)
+            {
+                this.rosMessageName = rosMessageName;
+            }
+
+            public override string RosMessageName => rosMessageName;
+
+            public override void SerializeTo(MessageSerializer serializer)
+            {
+                serializer.Write((byte)0);
+            }
+        }
+#endif
     }
 }
