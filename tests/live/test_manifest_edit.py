@@ -11,9 +11,11 @@ import pytest
 from unityscaffold.errors import LocatedError
 from unityscaffold.interfaces.live import Direction, DiscoveredService, DiscoveredTopic, Discovery
 from unityscaffold.interfaces.live._actions import group_actions
+from unityscaffold.interfaces.live.model import DiscoveredAction
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.manifest import load_manifest, starter_manifest
 from unityscaffold.manifest.edit import edit_manifest, manifest_fragment
+from unityscaffold.manifest.runtime import Runtime
 
 EXAMPLE = """\
 # My robot
@@ -249,3 +251,31 @@ def test_an_action_whose_topics_are_listed_already_is_not_added_again() -> None:
     edited = edit_manifest(listed, found, cache_entry="ros_definitions")
     assert edited.added_actions == () and edited.already_listed == ("/dock",)
     assert "actions:" not in edited.text
+
+
+def test_entries_discovered_for_the_connector_runtime_go_on_its_rosconnection(
+    tmp_path: Path,
+) -> None:
+    starter = starter_manifest(1, "Assets/Scenes/Main.unity", runtime=Runtime.TCP_CONNECTOR)
+    directed = tuple(t for t in FOUND.topics if t.direction is not Direction.UNKNOWN)
+    found = dataclasses.replace(FOUND, topics=directed, services=())
+    edited = edit_manifest(starter, found, cache_entry="d")
+    assert "RosConnector" not in edited.text
+    path = tmp_path / "robot.yaml"
+    (tmp_path / "d").mkdir()
+    path.write_text(edited.text, encoding="utf-8")
+    manifest = load_manifest(path)
+    assert manifest.runtime is Runtime.TCP_CONNECTOR
+    assert [(t.name, t.gameobject) for t in manifest.topics] == [
+        ("/imu", "ROSConnection"),
+        ("/odom", "ROSConnection"),
+    ]
+
+
+def test_ros2_actions_are_not_added_to_a_connector_manifest() -> None:
+    starter = starter_manifest(2, "Assets/Scenes/Main.unity", runtime=Runtime.TCP_CONNECTOR)
+    action = DiscoveredAction("/fibonacci", "test_msgs/action/Fibonacci", "client", ())
+    found = Discovery(Dialect.ROS2, "graph", actions=(action,))
+    edited = edit_manifest(starter, found, cache_entry="d")
+    assert edited.added_actions == () and edited.already_listed == ("/fibonacci",)
+    assert "test_msgs/action/Fibonacci, role" not in edited.text

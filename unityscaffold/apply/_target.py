@@ -21,7 +21,7 @@ from unityscaffold.manifest.runtime import Runtime
 from unityscaffold.unity import ScriptRef
 from unityscaffold.unity.values import FieldValue
 
-__all__ = ["RuntimeTarget", "target_for"]
+__all__ = ["RuntimeTarget", "target_for", "target_of"]
 
 Entry = Topic | Service | Action
 
@@ -59,3 +59,7 @@ _TARGETS: dict[Runtime, RuntimeTarget] = {
 
 def target_for(manifest: Manifest) -> RuntimeTarget:
     return _TARGETS[manifest.runtime]
+
+
+def target_of(runtime: Runtime) -> RuntimeTarget:
+    return _TARGETS[runtime]

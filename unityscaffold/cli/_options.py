@@ -9,6 +9,7 @@ import typer
 
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.model import Dialect
+from unityscaffold.manifest.runtime import Runtime
 
 RosOption: int | None = typer.Option(
     None,
@@ -64,3 +65,23 @@ def find_manifest(given: Path | None) -> Path:
         if (folder / ".git").exists():
             break
     return Path(MANIFEST_NAME)
+
+
+RuntimeOption: str = typer.Option(
+    "ros-sharp",
+    "--runtime",
+    metavar="ros-sharp|ros-tcp-connector",
+    help="The Unity library to talk to ROS through: Siemens' ROS# (rosbridge) or Unity's "
+    "ROS-TCP-Connector (ROS-TCP-Endpoint).",
+)
+
+
+def runtime_of(text: str) -> Runtime:
+    """The runtime ``--runtime`` names."""
+    choices = [r.value for r in Runtime]
+    if text not in choices:
+        raise UserError(
+            f"--runtime must be {' or '.join(choices)}, not {text}",
+            hint="ros-sharp is Siemens' ROS#; ros-tcp-connector is Unity's ROS-TCP-Connector",
+        )
+    return Runtime(text)

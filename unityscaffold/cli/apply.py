@@ -12,7 +12,7 @@ from unityscaffold.apply.init import init_project
 from unityscaffold.apply.report import plan_diff, plan_json, plan_summary
 from unityscaffold.apply.run import Mode, Outcome, run
 from unityscaffold.cli import _recorder
-from unityscaffold.cli._options import find_manifest
+from unityscaffold.cli._options import RuntimeOption, find_manifest, runtime_of
 from unityscaffold.errors import Exit
 from unityscaffold.manifest.modeline import stale_schema
 
@@ -170,14 +170,7 @@ def register(app: typer.Typer) -> None:
     def init_command(
         directory: Path = typer.Argument(..., metavar="DIR", help="Folder for the new project."),
         ros: int = typer.Option(2, "--ros", metavar="1|2", help="ROS version of the robot."),
-        runtime: str = typer.Option(
-            "ros-sharp",
-            "--runtime",
-            metavar="ros-sharp|ros-tcp-connector",
-            help="The Unity library to talk to ROS through: Siemens' ROS# (rosbridge) or "
-            "Unity's ROS-TCP-Connector (ROS-TCP-Endpoint); its package is pinned in "
-            "Packages/manifest.json and the manifest says `runtime:`.",
-        ),
+        runtime: str = RuntimeOption,
         force: bool = typer.Option(
             False,
             "--force",
@@ -197,18 +190,11 @@ def register(app: typer.Typer) -> None:
 
           scaffold init my_robot --ros 1 --runtime ros-tcp-connector
         """
-        from unityscaffold.errors import UserError
-        from unityscaffold.manifest.runtime import Runtime
-
         if ros not in (1, 2):
+            from unityscaffold.errors import UserError
+
             raise UserError(f"--ros must be 1 or 2, not {ros}")
-        choices = [r.value for r in Runtime]
-        if runtime not in choices:
-            raise UserError(
-                f"--runtime must be {' or '.join(choices)}, not {runtime}",
-                hint="ros-sharp is Siemens' ROS#; ros-tcp-connector is Unity's ROS-TCP-Connector",
-            )
-        changes = init_project(directory, ros, force=force, runtime=Runtime(runtime))
+        changes = init_project(directory, ros, force=force, runtime=runtime_of(runtime))
         created = sum(1 for c in changes if c.writes)
         typer.echo(
             f"created {created} files in {directory}; next: scaffold apply "

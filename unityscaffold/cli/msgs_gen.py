@@ -1,4 +1,5 @@
-"""``scaffold msgs gen``: generate ROS# C# classes for types or whole packages."""
+"""``scaffold msgs gen``: generate ROS# (or ROS-TCP-Connector) C# classes for types or whole
+packages."""
 
 from __future__ import annotations
 
@@ -10,11 +11,19 @@ from typing import TYPE_CHECKING
 
 import typer
 
-from unityscaffold.cli._options import NoEnvOption, PathOption, RosOption, dialect_of
+from unityscaffold.cli._options import (
+    NoEnvOption,
+    PathOption,
+    RosOption,
+    RuntimeOption,
+    dialect_of,
+    runtime_of,
+)
 from unityscaffold.errors import Diagnostic, Exit, LocatedError, UserError
 from unityscaffold.fileout import ChangeKind, FileChange, plan_files, write_files
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
+from unityscaffold.manifest.runtime import Runtime
 
 if TYPE_CHECKING:  # codegen is imported when `gen` runs: `msgs list` and `show` skip its cost
     from unityscaffold.codegen import GeneratedCode
@@ -81,18 +90,21 @@ def run(
     *,
     use_environment: bool = True,
     write: bool = True,
+    runtime: Runtime = Runtime.ROS_SHARP,
 ) -> tuple[GeneratedCode, list[FileChange]]:
-    """Generate and (unless ``write`` is false) write; returns what was generated and each
-    file's change."""
-    from unityscaffold.codegen import Options, generate
+    """Generate ``runtime``'s classes and (unless ``write`` is false) write them; returns what
+    was generated and each file's change."""
+    from unityscaffold.apply.runtimes import generate_classes
+    from unityscaffold.codegen import Options
     from unityscaffold.codegen.layout import output_files
     from unityscaffold.codegen.naming import ClassClash
 
     _check_out_dir(out)
     registry = Registry.load(dialect, paths, use_environment=use_environment)
     roots = resolve_roots(registry, names, everything)
+    options = Options(dialect, include_shipped, namespace)
     try:
-        code = generate(registry, roots, Options(dialect, include_shipped, namespace))
+        code = generate_classes(runtime, registry, roots, options)
     except ClassClash as clash:
         raise UserError(clash.message, hint=_CLASH_HINTS[clash.with_shipped]) from None
     changes = plan_files(output_files(code, out))
@@ -164,13 +176,19 @@ def register(app: typer.Typer) -> None:
         paths: list[Path] = PathOption,
         no_env: bool = NoEnvOption,
         include_shipped: bool = typer.Option(
-            False, "--include-shipped", help="Also generate types ROS# already ships."
+            False,
+            "--include-shipped",
+            help="Also generate types ROS# already ships (not with ros-tcp-connector: its "
+            "registry holds one class per ROS name).",
         ),
         namespace: str = typer.Option(
             None,
             "--namespace",
-            help="Root namespace instead of RosSharp.RosBridgeClient.MessageTypes (generates all).",
+            help="Root namespace instead of RosSharp.RosBridgeClient.MessageTypes (generates "
+            "all), or for ros-tcp-connector instead of RosMessageTypes (its shipped classes "
+            "stay referenced).",
         ),
+        runtime: str = RuntimeOption,
         everything: bool = typer.Option(False, "--all", help="Generate every type found."),
         check: bool = typer.Option(
             False,
@@ -182,11 +200,13 @@ def register(app: typer.Typer) -> None:
         ),
         as_json: bool = typer.Option(False, "--json", help="Print the result as JSON."),
     ) -> None:
-        """Generate ROS# C# classes for types and everything they use.
+        """Generate ROS# (or ROS-TCP-Connector) C# classes for types and everything they use.
 
         Examples:
 
           scaffold msgs gen my_msgs/msg/Status -o Assets/RosMessages
+
+          scaffold msgs gen my_msgs/msg/Status -o Assets/RosMessages --runtime ros-tcp-connector
 
           scaffold msgs gen my_msgs --ros 1 --path ~/ws/src -o Assets/Ros
 
@@ -202,6 +222,7 @@ def register(app: typer.Typer) -> None:
             everything,
             use_environment=not no_env,
             write=not check,
+            runtime=runtime_of(runtime),
         )
         if as_json:
             typer.echo(_json(code, changes, out, check=check))

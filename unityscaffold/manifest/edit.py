@@ -31,6 +31,9 @@ from unityscaffold.interfaces.live.model import (
     DiscoveredTopic,
     Discovery,
 )
+from unityscaffold.interfaces.model import Dialect
+from unityscaffold.manifest._spec_connector import TCP_CONNECTOR
+from unityscaffold.manifest.runtime import Runtime
 
 __all__ = [
     "DEFAULT_GAMEOBJECT",
@@ -170,24 +173,36 @@ def _entry(pairs: list[tuple[str, str]], like: CommentedSeq) -> CommentedMap:
     return entry
 
 
-def _topic_pairs(topic: DiscoveredTopic) -> list[tuple[str, str]]:
+def _topic_pairs(topic: DiscoveredTopic, gameobject: str) -> list[tuple[str, str]]:
     pairs = [("name", topic.name), ("type", topic.type)]
     if topic.direction is not Direction.UNKNOWN:
         pairs.append(("direction", topic.direction.value))
-    return [*pairs, ("gameobject", DEFAULT_GAMEOBJECT)]
+    return [*pairs, ("gameobject", gameobject)]
 
 
-def _service_pairs(service: DiscoveredService) -> list[tuple[str, str]]:
+def _service_pairs(service: DiscoveredService, gameobject: str) -> list[tuple[str, str]]:
     return [
         ("name", service.name),
         ("type", service.type),
         ("role", service.role),
-        ("gameobject", DEFAULT_GAMEOBJECT),
+        ("gameobject", gameobject),
     ]
 
 
+def _is_tcp(document: CommentedMap) -> bool:
+    return bool(document.get("runtime") == Runtime.TCP_CONNECTOR.value)
+
+
+def _connection_gameobject(document: CommentedMap) -> str:
+    """Where new entries go: the runtime's connection GameObject at its default name
+    (ROS-TCP-Connector's ROSConnection, else ROS#'s RosConnector)."""
+    if _is_tcp(document):
+        return str(TCP_CONNECTOR.key("gameobject").default)
+    return DEFAULT_GAMEOBJECT
+
+
 def _add_topics(
-    seq: CommentedSeq, topics: Iterable[DiscoveredTopic]
+    seq: CommentedSeq, topics: Iterable[DiscoveredTopic], gameobject: str
 ) -> tuple[list[str], list[str]]:
     listed = _listed_names(seq)
     added, skipped = [], []
@@ -195,7 +210,7 @@ def _add_topics(
         if topic.name in listed:
             skipped.append(topic.name)
             continue
-        entry = _entry(_topic_pairs(topic), seq)
+        entry = _entry(_topic_pairs(topic, gameobject), seq)
         _append(seq, entry)
         if topic.direction is Direction.UNKNOWN:
             _add_todo(seq, entry, _TODO)
@@ -204,7 +219,7 @@ def _add_topics(
 
 
 def _add_services(
-    seq: CommentedSeq, services: Iterable[DiscoveredService]
+    seq: CommentedSeq, services: Iterable[DiscoveredService], gameobject: str
 ) -> tuple[list[str], list[str]]:
     listed = _listed_names(seq)
     added, skipped = [], []
@@ -212,13 +227,13 @@ def _add_services(
         if service.name in listed:
             skipped.append(service.name)
             continue
-        _append(seq, _entry(_service_pairs(service), seq))
+        _append(seq, _entry(_service_pairs(service, gameobject), seq))
         added.append(service.name)
     return added, skipped
 
 
 def _add_actions(
-    seq: CommentedSeq, actions: Iterable[DiscoveredAction]
+    seq: CommentedSeq, actions: Iterable[DiscoveredAction], gameobject: str
 ) -> tuple[list[str], list[str]]:
     """Actions with the role the graph shows; ``client`` with a TODO when it shows none."""
     listed = _listed_names(seq)
@@ -231,7 +246,7 @@ def _add_actions(
             ("name", action.name),
             ("type", action.type),
             ("role", action.role or "client"),
-            ("gameobject", DEFAULT_GAMEOBJECT),
+            ("gameobject", gameobject),
         ]
         entry = _entry(pairs, seq)
         _append(seq, entry)
@@ -289,16 +304,17 @@ def edit_manifest(
     yaml, document = _load(text, path)
     _check_dialect(document, discovery, path)
     added_interface = _add_interface(document, cache_entry, path)
+    gameobject = _connection_gameobject(document)
     # A list is touched only when something is found for it: an empty "services:" whose
     # entries are commented out would otherwise become "services: []", and uncommenting an
     # example under it would then be a YAML error.
     topics, skipped_topics = (
-        _add_topics(_list(document, "topics", path), discovery.topics)
+        _add_topics(_list(document, "topics", path), discovery.topics, gameobject)
         if discovery.topics
         else ([], [])
     )
     services, skipped_services = (
-        _add_services(_list(document, "services", path), discovery.services)
+        _add_services(_list(document, "services", path), discovery.services, gameobject)
         if discovery.services
         else ([], [])
     )
@@ -307,10 +323,14 @@ def edit_manifest(
     as_topics = _listed_names(document.get("topics") or ())
     by_topics = [a.name for a in discovery.actions if any(t.name in as_topics for t in a.topics)]
     wanted = [a for a in discovery.actions if a.name not in by_topics]
+    # ROS-TCP-Endpoint's ROS 2 node carries no actions: the manifest would refuse them
+    carried = not (_is_tcp(document) and discovery.dialect is Dialect.ROS2)
+    unusable = [] if carried else [a.name for a in wanted]
+    wanted = wanted if carried else []
     actions, skipped_actions = (
-        _add_actions(_list(document, "actions", path), wanted) if wanted else ([], [])
+        _add_actions(_list(document, "actions", path), wanted, gameobject) if wanted else ([], [])
     )
-    skipped_actions += by_topics
+    skipped_actions += by_topics + unusable
     result = ManifestEdit(
         text,
         tuple(topics),
