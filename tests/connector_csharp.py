@@ -35,7 +35,14 @@ namespace Unity.Robotics.ROSTCPConnector
 }
 """
 
-__all__ = ["MCS_FLAGS", "compile_connector", "compile_with_connector", "connector"]
+__all__ = [
+    "COMPILE_ONLY",
+    "MCS_FLAGS",
+    "RUNNABLE",
+    "compile_connector",
+    "compile_with_connector",
+    "connector",
+]
 
 
 def connector() -> Path:
@@ -63,16 +70,19 @@ def _tcp_sources(out: Path) -> list[Path]:
     return [*sources, stand_in]
 
 
-def compile_connector(mcs: str, out: Path, *, ros2: bool) -> tuple[Path, Path]:
-    """UnityEngine's stand-in and the connector's runtime (as the package's assembly)."""
+COMPILE_ONLY = (STUBS / "UnityEngine.cs", STUBS / "UnityEngineConnector.cs")
+#: The stand-in that runs: the frame loop of tests/runtime with the connector's extra members.
+RUNNABLE = (REPO / "tests" / "runtime" / "csharp" / "UnityEngineRuntime.cs", COMPILE_ONLY[1])
+
+
+def compile_connector(
+    mcs: str, out: Path, *, ros2: bool, engine: tuple[Path, ...] = COMPILE_ONLY
+) -> tuple[Path, Path]:
+    """UnityEngine's stand-in (``engine``: its sources) and the connector's runtime (as the
+    package's assembly)."""
     out.mkdir(parents=True, exist_ok=True)
-    engine = compile_cs(
-        mcs,
-        [STUBS / "UnityEngine.cs", STUBS / "UnityEngineConnector.cs"],
-        out / "UnityEngine.dll",
-        ros2=False,
-    )
-    engine.assert_clean()
+    unity = compile_cs(mcs, list(engine), out / "UnityEngine.dll", ros2=False)
+    unity.assert_clean()
     runtime = connector() / "Runtime"
     sources = sorted((runtime / "MessageGeneration").rglob("*.cs"))
     sources += sorted((runtime / "Messages").rglob("*.cs"))
@@ -83,11 +93,11 @@ def compile_connector(mcs: str, out: Path, *, ros2: bool) -> tuple[Path, Path]:
         sources,
         out / "Unity.Robotics.ROSTCPConnector.dll",
         ros2=ros2,
-        references=(engine.assembly,),
+        references=(unity.assembly,),
         strict=False,
     )
     assert package.returncode == 0, package.output
-    return engine.assembly, package.assembly
+    return unity.assembly, package.assembly
 
 
 def compile_with_connector(mcs: str, sources: list[Path], out: Path, *, ros2: bool) -> Compiled:

@@ -1,7 +1,16 @@
-// A compile-only stand-in for the further parts of UnityEngine that ROS-TCP-Connector's
-// Runtime/TcpConnector uses (its HUD, settings and prefab lookup), compiled together with
-// UnityEngine.cs. Signatures follow Unity's scripting API; nothing here runs.
+// A stand-in for the further parts of UnityEngine that ROS-TCP-Connector's Runtime/TcpConnector
+// uses (its HUD, settings, prefab lookup and the JSON of its system commands), compiled together
+// with UnityEngine.cs (compile-only) or tests/runtime/csharp/UnityEngineRuntime.cs (to run it).
+// Signatures follow Unity's scripting API. What runs: JsonUtility for the flat structs the
+// connector gives it, PlayerPrefs in memory, Resources.Load finding nothing (so
+// GetOrCreateInstance falls back to a new GameObject), Application.isPlaying; the GUI types are
+// there to compile (the connector draws only with its HUD shown) and do nothing.
 using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Linq;
+using System.Reflection;
+using System.Text;
 
 namespace UnityEngine
 {
@@ -66,19 +75,126 @@ namespace UnityEngine
         public static bool isPlaying { get { return true; } }
     }
 
+    // As Unity's, for what the connector gives it (SysCommand.cs): the public fields of a flat
+    // struct, of types string, int, bool and string[], in declaration order.
     public static class JsonUtility
     {
-        public static string ToJson(object obj) { return null; }
-        public static T FromJson<T>(string json) { return default(T); }
+        public static string ToJson(object obj)
+        {
+            var parts = new List<string>();
+            foreach (FieldInfo field in obj.GetType().GetFields(BindingFlags.Public | BindingFlags.Instance))
+            {
+                parts.Add(Quote(field.Name) + ":" + Value(field.GetValue(obj)));
+            }
+            return "{" + string.Join(",", parts) + "}";
+        }
+
+        public static T FromJson<T>(string json)
+        {
+            object result = Activator.CreateInstance(typeof(T));
+            int at = 0;
+            Expect(json, ref at, '{');
+            while (Skip(json, ref at) != '}')
+            {
+                string name = ReadString(json, ref at);
+                Expect(json, ref at, ':');
+                object value = ReadValue(json, ref at);
+                FieldInfo field = typeof(T).GetField(name, BindingFlags.Public | BindingFlags.Instance);
+                if (field != null) field.SetValue(result, Convert(value, field.FieldType));
+                if (Skip(json, ref at) == ',') at++;
+            }
+            return (T)result;
+        }
+
+        static string Value(object value)
+        {
+            if (value == null) return "\"\"";
+            if (value is bool b) return b ? "true" : "false";
+            if (value is int i) return i.ToString(CultureInfo.InvariantCulture);
+            if (value is string[] items) return "[" + string.Join(",", items.Select(Quote)) + "]";
+            return Quote(value.ToString());
+        }
+
+        static string Quote(string text)
+        {
+            var builder = new StringBuilder("\"");
+            foreach (char c in text)
+            {
+                if (c == '"' || c == '\\') builder.Append('\\').Append(c);
+                else if (c < ' ') builder.Append("\\u").Append(((int)c).ToString("x4"));
+                else builder.Append(c);
+            }
+            return builder.Append('"').ToString();
+        }
+
+        static object Convert(object value, Type type)
+        {
+            if (type == typeof(int)) return System.Convert.ToInt32(value, CultureInfo.InvariantCulture);
+            if (type == typeof(string[])) return ((List<object>)value).Select(v => (string)v).ToArray();
+            return value;
+        }
+
+        static char Skip(string json, ref int at)
+        {
+            while (char.IsWhiteSpace(json[at])) at++;
+            return json[at];
+        }
+
+        static void Expect(string json, ref int at, char wanted)
+        {
+            if (Skip(json, ref at) != wanted) throw new ArgumentException("JSON: expected " + wanted + " at " + at);
+            at++;
+        }
+
+        static object ReadValue(string json, ref int at)
+        {
+            char c = Skip(json, ref at);
+            if (c == '"') return ReadString(json, ref at);
+            if (c == '[')
+            {
+                var items = new List<object>();
+                at++;
+                while (Skip(json, ref at) != ']')
+                {
+                    items.Add(ReadValue(json, ref at));
+                    if (Skip(json, ref at) == ',') at++;
+                }
+                at++;
+                return items;
+            }
+            int start = at;
+            while (at < json.Length && ",}] \t\r\n".IndexOf(json[at]) < 0) at++;
+            string word = json.Substring(start, at - start);
+            if (word == "true" || word == "false") return word == "true";
+            return double.Parse(word, CultureInfo.InvariantCulture);
+        }
+
+        static string ReadString(string json, ref int at)
+        {
+            Expect(json, ref at, '"');
+            var builder = new StringBuilder();
+            while (json[at] != '"')
+            {
+                char c = json[at++];
+                if (c != '\\') { builder.Append(c); continue; }
+                char e = json[at++];
+                if (e == 'u') { builder.Append((char)System.Convert.ToInt32(json.Substring(at, 4), 16)); at += 4; }
+                else builder.Append(e == 'n' ? '\n' : e == 't' ? '\t' : e == 'r' ? '\r' : e == 'b' ? '\b' : e == 'f' ? '\f' : e);
+            }
+            at++;
+            return builder.ToString();
+        }
     }
 
+    // As Unity's, without the disk: values live for the run.
     public static class PlayerPrefs
     {
-        public static bool HasKey(string key) { return false; }
-        public static string GetString(string key, string defaultValue) { return defaultValue; }
-        public static int GetInt(string key, int defaultValue) { return defaultValue; }
-        public static void SetString(string key, string value) { }
-        public static void SetInt(string key, int value) { }
+        static readonly Dictionary<string, object> values = new Dictionary<string, object>();
+        public static bool HasKey(string key) { return values.ContainsKey(key); }
+        public static string GetString(string key, string defaultValue) { return values.TryGetValue(key, out object v) ? (string)v : defaultValue; }
+        public static int GetInt(string key, int defaultValue) { return values.TryGetValue(key, out object v) ? (int)v : defaultValue; }
+        public static void SetString(string key, string value) { values[key] = value; }
+        public static void SetInt(string key, int value) { values[key] = value; }
     }
 
     public static class Resources

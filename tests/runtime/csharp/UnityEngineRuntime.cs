@@ -14,6 +14,7 @@ using System;
 using System.Collections;
 using System.Collections.Generic;
 using System.Diagnostics;
+using System.Linq;
 using System.Reflection;
 
 namespace UnityEngine
@@ -30,6 +31,11 @@ namespace UnityEngine
                 if (component is T found) return found;
             }
             return null;
+        }
+
+        public static T Instantiate<T>(T original) where T : Object
+        {
+            throw new NotSupportedException("no prefabs here: Resources.Load finds none");
         }
 
         public static void Destroy(Object obj)
@@ -53,6 +59,8 @@ namespace UnityEngine
         internal readonly List<Component> Components = new List<Component>();
 
         public GameObject(string name) { this.name = name; }
+
+        public SceneManagement.Scene scene { get { return new SceneManagement.Scene(); } }
 
         public T AddComponent<T>() where T : Component, new()
         {
@@ -93,6 +101,7 @@ namespace UnityEngine
     public class Behaviour : Component
     {
         public bool enabled { get; set; } = true;
+        public bool isActiveAndEnabled { get { return enabled && !destroyed; } }
     }
 
     public class MonoBehaviour : Behaviour { }
@@ -115,6 +124,26 @@ namespace UnityEngine
         }
 
         static float lastFrame;
+
+        // What Unity does before the first scene loads: every [RuntimeInitializeOnLoadMethod]
+        // of the loaded assemblies runs (the connector's message classes register themselves).
+        public static void Boot()
+        {
+            foreach (Assembly assembly in AppDomain.CurrentDomain.GetAssemblies())
+            {
+                Type[] types;
+                try { types = assembly.GetTypes(); }
+                catch (ReflectionTypeLoadException e) { types = e.Types.Where(t => t != null).ToArray(); }
+                foreach (Type type in types)
+                {
+                    foreach (MethodInfo method in type.GetMethods(BindingFlags.Static | BindingFlags.Public | BindingFlags.NonPublic))
+                    {
+                        if (method.GetCustomAttributes(typeof(RuntimeInitializeOnLoadMethodAttribute), false).Length > 0)
+                            method.Invoke(null, null);
+                    }
+                }
+            }
+        }
 
         public static void Frame()
         {
@@ -170,7 +199,15 @@ namespace UnityEngine
         public static void LogWarning(object message, Object context) { Write("warning", message); }
         public static void LogError(object message) { Write("error", message); }
         public static void LogError(object message, Object context) { Write("error", message); }
+        public static void LogException(Exception exception) { Write("exception", exception); }
     }
+
+    // Unity calls these methods before the first scene's Start; Player.Boot does here.
+    [AttributeUsage(AttributeTargets.Method)]
+    public sealed class RuntimeInitializeOnLoadMethodAttribute : Attribute { }
+
+    [AttributeUsage(AttributeTargets.Field)]
+    public sealed class SerializeField : Attribute { }
 
     [AttributeUsage(AttributeTargets.Field)]
     public sealed class HideInInspector : Attribute { }
@@ -179,5 +216,13 @@ namespace UnityEngine
     public sealed class TooltipAttribute : Attribute
     {
         public TooltipAttribute(string tooltip) { }
+    }
+}
+
+namespace UnityEngine.SceneManagement
+{
+    public struct Scene
+    {
+        public string name { get { return "Main"; } }
     }
 }
