@@ -4,6 +4,7 @@
 // </auto-generated>
 using System.Collections.Generic;
 using Unity.Robotics.ROSTCPConnector;
+using Unity.Robotics.ROSTCPConnector.MessageGeneration;
 using UnityEngine;
 using Actionlib = RosMessageTypes.Actionlib;
 using BuiltinInterfaces = RosMessageTypes.BuiltinInterfaces;
@@ -53,6 +54,8 @@ namespace RosGenerated
             {
                 return;
             }
+            Registered(global::RosMessageTypes.Diffbot.DockActionFeedback.k_RosMessageName, global::RosMessageTypes.Diffbot.DockActionFeedback.Deserialize);
+            Registered(global::RosMessageTypes.Diffbot.DockActionResult.k_RosMessageName, global::RosMessageTypes.Diffbot.DockActionResult.Deserialize);
             Connection.RegisterPublisher(ActionName + "/goal", global::RosMessageTypes.Diffbot.DockActionGoal.k_RosMessageName);
             Connection.RegisterPublisher(ActionName + "/cancel", Actionlib.GoalIDMsg.k_RosMessageName);
             Connection.Subscribe<Actionlib.GoalStatusArrayMsg>(ActionName + "/status", ServerStatus);
@@ -220,6 +223,16 @@ namespace RosGenerated
         private static Std.HeaderMsg Stamped()
         {
             return new Std.HeaderMsg { stamp = Now() };
+        }
+
+        // The connector finds a subscribed class by its registration, and its shipped action
+        // wrappers (nav_msgs/GetMap's, for one) do not register themselves: those are here.
+        private static void Registered<T>(string rosMessageName, System.Func<MessageDeserializer, T> deserialize) where T : Message
+        {
+            if (MessageRegistry.GetRosMessageName<T>() == null)
+            {
+                MessageRegistry.Register(rosMessageName, deserialize);
+            }
         }
 
         private sealed class Unlisted

@@ -4,6 +4,7 @@
 // </auto-generated>
 using System.Collections.Generic;
 using Unity.Robotics.ROSTCPConnector;
+using Unity.Robotics.ROSTCPConnector.MessageGeneration;
 using UnityEngine;
 using Actionlib = RosMessageTypes.Actionlib;
 using BuiltinInterfaces = RosMessageTypes.BuiltinInterfaces;
@@ -55,6 +56,7 @@ namespace RosGenerated
             {
                 return;
             }
+            Registered(global::RosMessageTypes.Diffbot.DockActionGoal.k_RosMessageName, global::RosMessageTypes.Diffbot.DockActionGoal.Deserialize);
             Connection.RegisterPublisher(ActionName + "/status", Actionlib.GoalStatusArrayMsg.k_RosMessageName);
             Connection.RegisterPublisher(ActionName + "/feedback", global::RosMessageTypes.Diffbot.DockActionFeedback.k_RosMessageName);
             Connection.RegisterPublisher(ActionName + "/result", global::RosMessageTypes.Diffbot.DockActionResult.k_RosMessageName);
@@ -234,6 +236,16 @@ namespace RosGenerated
         private static Std.HeaderMsg Stamped()
         {
             return new Std.HeaderMsg { stamp = Now() };
+        }
+
+        // The connector finds a subscribed class by its registration, and its shipped action
+        // wrappers (nav_msgs/GetMap's, for one) do not register themselves: those are here.
+        private static void Registered<T>(string rosMessageName, System.Func<MessageDeserializer, T> deserialize) where T : Message
+        {
+            if (MessageRegistry.GetRosMessageName<T>() == null)
+            {
+                MessageRegistry.Register(rosMessageName, deserialize);
+            }
         }
 
         // ROSConnection.GetOrCreateInstance finds the scene's connection, or makes one.
