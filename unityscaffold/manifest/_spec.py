@@ -257,7 +257,8 @@ TOPIC = Section(
         ),
         Key(
             "throttle",
-            "Subscribe only: minimum milliseconds between messages (rosbridge `throttle_rate`).",
+            "ros-sharp, subscribe only: minimum milliseconds between messages (rosbridge "
+            "`throttle_rate`).",
             {"type": "integer", "minimum": 0, "maximum": INT32_MAX},
         ),
         Key(
