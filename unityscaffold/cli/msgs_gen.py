@@ -206,7 +206,7 @@ def register(app: typer.Typer) -> None:
 
           scaffold msgs gen my_msgs/msg/Status -o Assets/RosMessages
 
-          scaffold msgs gen my_msgs/msg/Status -o Assets/RosMessages --runtime ros-tcp-connector
+          scaffold msgs gen my_msgs -o Assets/Ros --runtime ros-tcp-connector
 
           scaffold msgs gen my_msgs --ros 1 --path ~/ws/src -o Assets/Ros
 
