@@ -248,6 +248,22 @@ def test_a_robot_name_that_cannot_be_its_gameobject_or_folder_is_a_located_error
     assert (project / "Assets" / "Robot" / "Materials" / "blue.mat").is_file()
 
 
+def test_robots_share_an_asset_folder_only_for_the_same_files(project: Path) -> None:
+    build_tree(project, {"ros/red.urdf": URDF.replace('rgba="0 0 0.8 1"', 'rgba="1 0 0 1"')})
+    twins = "    gameobject: A\n  - {urdf: ros/bot.urdf, gameobject: B}\n"
+    assert _apply(project, twins).code == 0
+    third = "  - {urdf: ros/red.urdf, gameobject: C}\n"
+    (project / "robot.yaml").write_text(HEADER + twins + third)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.err
+    assert (
+        "robot.yaml:9:5: error: Assets/Urdf/bot/Materials/blue.mat would differ from the one "
+        "the robot on line 6 puts there" in run.err
+    )
+    assert snapshot(project) == before
+
+
 WITHOUT_ARM = URDF.split('  <link name="arm">')[0] + "</robot>\n"
 
 

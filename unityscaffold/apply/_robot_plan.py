@@ -42,6 +42,7 @@ class PlannedRobot:
 def plan_robots(manifest: Manifest, salt: str) -> list[PlannedRobot]:
     planned = [_plan(manifest, entry, salt) for entry in manifest.robots]
     _refuse_shared_gameobjects(planned)
+    _refuse_clashing_assets(planned, manifest.project_root)
     return planned
 
 
@@ -60,6 +61,22 @@ def _refuse_shared_gameobjects(planned: Iterable[PlannedRobot]) -> None:
                 hint=f"the robot on line {other.entry.locations.item.line} is there already; "
                 "give each robot its own `gameobject`",
             )
+
+
+def _refuse_clashing_assets(planned: Iterable[PlannedRobot], root: Path) -> None:
+    """Robots may share an asset folder (two of one URDF do) as long as they want the same
+    files there; two materials of one name and different colours cannot both be written."""
+    first: dict[Path, tuple[bytes, PlannedRobot]] = {}
+    for robot in planned:
+        for file in robot.files:
+            content, other = first.setdefault(file.path, (file.content, robot))
+            if content != file.content:
+                raise LocatedError.at(
+                    robot.entry.locations.of("assets"),
+                    f"{file.path.relative_to(root).as_posix()} would differ from the one the "
+                    f"robot on line {other.entry.locations.item.line} puts there",
+                    hint="give each of these robots its own `assets` folder",
+                )
 
 
 def _check_inputs(entry: RobotEntry) -> None:
