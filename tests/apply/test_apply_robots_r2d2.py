@@ -19,6 +19,7 @@ covers; the helper that lands one deletes its entry (and its stand-in in ``_mani
 from __future__ import annotations
 
 import math
+import os
 import re
 import shutil
 import struct
@@ -34,7 +35,7 @@ from unityscaffold.unity.index import GameObject
 from unityscaffold.unity.setvalue import component_label
 
 REPO = Path(__file__).resolve().parents[2]
-VENDOR = REPO.parent / "shared" / "vendor"
+VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
 STEP = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
 START = STEP / "Scenes" / "gazebo_simulation_scene_ROS2_1_Camera.unity"
 COMPLETED = STEP / "Scenes" / "Completed" / "gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
