@@ -264,6 +264,45 @@ def test_robots_share_an_asset_folder_only_for_the_same_files(project: Path) -> 
     assert snapshot(project) == before
 
 
+@pytest.mark.parametrize(
+    ("entry", "where"),
+    [
+        (
+            "  - {path: bot/base/arm, position: [1, 2, 3]}\n",
+            "robot.yaml:8:36: error: 'bot/base/arm'",
+        ),
+        ("  - {path: bot, rotation: [0, 90, 0]}\n", "robot.yaml:8:27: error: 'bot'"),
+        (
+            "  - {path: bot/base/Visuals/unnamed/Cube, primitive: plane}\n",
+            "robot.yaml:8:54: error: 'bot/base/Visuals/unnamed/Cube'",
+        ),
+    ],
+)
+def test_an_object_entry_cannot_move_or_reshape_what_a_robot_imports(
+    project: Path, entry: str, where: str
+) -> None:
+    """Else the import and the entry each put their own value back on every apply."""
+    (project / "robot.yaml").write_text(HEADER + "objects:\n" + entry)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert f"{where} belongs to robot bot, whose `robots` entry and URDF set its" in run.err
+    assert snapshot(project) == before
+
+
+def test_an_object_entry_adds_to_a_robots_link_and_places_its_own_children(
+    project: Path,
+) -> None:
+    body = (
+        "objects:\n  - {path: bot/base/Plane, primitive: plane, position: [0, 1, 0]}\n"
+        "  - {path: bot/base, components: [{type: BoxCollider}]}\n"
+    )
+    assert _apply(project, body).code == 0
+    again = _apply(project, body)
+    assert again.code == 0 and "wrote 0 files" in again.out, again.out
+    assert not [line for line in again.out.splitlines() if line.startswith("  update")]
+
+
 WITHOUT_ARM = URDF.split('  <link name="arm">')[0] + "</robot>\n"
 
 

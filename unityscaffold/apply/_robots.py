@@ -31,6 +31,7 @@ from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._lock import LockFile, LockRobot
 from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
+from unityscaffold.manifest.model import SceneObject
 from unityscaffold.unity import AssetRef, InlineMap, ObjectRef, SceneDocument
 from unityscaffold.unity.builtins import builtin_class
 from unityscaffold.unity.mesh import mesh_document
@@ -103,6 +104,35 @@ def remove_kept(editor: SceneEditor) -> None:
                     "it in Unity if it is not needed"
                 )
         editor.plan.robots.append(LockRobot(scene, robot, tuple(sorted(still))))
+
+
+# What an ``objects:`` entry would change on a robot's object that the import puts back
+_IMPORT_OWNS = ("position", "rotation", "scale", "primitive")
+
+
+def refuse_reshaped_robot_objects(editor: SceneEditor, objects: Sequence[SceneObject]) -> None:
+    """An ``objects:`` entry may add to a robot's GameObject (components, children), not move
+    it or give it another shape: the import puts its pose and meshes back first on every run,
+    so each apply would report the same two updates while ``--check`` passed."""
+    scene = editor.plan.relative
+    owned = {i for r in editor.plan.robots if r.scene == scene for i in r.file_ids}
+    for item in objects:
+        keys = [key for key in _IMPORT_OWNS if item.locations.has(key)]
+        if not keys:
+            continue
+        try:
+            go = editor.doc.find_gameobject(editor.path(item.path))
+        except UserError:
+            continue  # not in the scene yet: the entry makes it, no robot did
+        robot = next((r.gameobject for r in editor.plan.robots if go.file_id in r.file_ids), "")
+        if go.file_id in owned:
+            raise LocatedError.at(
+                item.locations.of(keys[0]),
+                f"'{item.path}' belongs to robot {robot}, whose `robots` entry and URDF set "
+                f"its {keys[0]}",
+                hint="move the robot with its `robots` entry's position and rotation, change "
+                "the URDF, or put what you add on a child object of your own",
+            )
 
 
 def _is_gameobject(editor: SceneEditor, file_id: int) -> bool:

@@ -32,7 +32,7 @@ from unityscaffold.apply._order import order_objects
 from unityscaffold.apply._references import typed_reference
 from unityscaffold.apply._renames import follow
 from unityscaffold.apply._robot_plan import PlannedRobot
-from unityscaffold.apply._robots import place_robots, remove_kept
+from unityscaffold.apply._robots import place_robots, refuse_reshaped_robot_objects, remove_kept
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._target import target_for
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
@@ -112,6 +112,7 @@ def _declare_objects(ctx: SceneContext, editor: SceneEditor) -> DeclaredObjects 
     objects = [o for o in ctx.manifest.objects if o.scene == editor.plan.relative]
     if not objects:
         return None
+    refuse_reshaped_robot_objects(editor, objects)
 
     def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
         return typed_reference(ctx, editor, path, declared, where)
