@@ -272,6 +272,7 @@ def test_robots_share_an_asset_folder_only_for_the_same_files(project: Path) -> 
             "robot.yaml:8:36: error: 'bot/base/arm'",
         ),
         ("  - {path: bot, rotation: [0, 90, 0]}\n", "robot.yaml:8:27: error: 'bot'"),
+        ("  - {path: bot/base/arm, sibling_index: 0}\n", "robot.yaml:8:41: error: 'bot/base/arm'"),
         (
             "  - {path: bot/base/Visuals/unnamed/Cube, primitive: plane}\n",
             "robot.yaml:8:54: error: 'bot/base/Visuals/unnamed/Cube'",

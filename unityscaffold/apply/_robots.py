@@ -107,12 +107,13 @@ def remove_kept(editor: SceneEditor) -> None:
 
 
 # What an ``objects:`` entry would change on a robot's object that the import puts back
-_IMPORT_OWNS = ("position", "rotation", "scale", "primitive")
+_IMPORT_OWNS = ("position", "rotation", "scale", "sibling_index", "primitive")
 
 
 def refuse_reshaped_robot_objects(editor: SceneEditor, objects: Sequence[SceneObject]) -> None:
     """An ``objects:`` entry may add to a robot's GameObject (components, children), not move
-    it or give it another shape: the import puts its pose and meshes back first on every run,
+    it, reorder it or give it another shape: the import puts its pose, its place among its
+    siblings and its meshes back first on every run,
     so each apply would report the same two updates while ``--check`` passed."""
     scene = editor.plan.relative
     owned = {i for r in editor.plan.robots if r.scene == scene for i in r.file_ids}
