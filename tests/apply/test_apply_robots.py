@@ -170,20 +170,6 @@ def test_what_the_user_adds_to_a_link_is_kept(project: Path) -> None:
     assert snapshot(project) == before
 
 
-def test_a_mesh_geometry_is_refused_at_its_element_and_nothing_is_written(project: Path) -> None:
-    urdf = URDF.replace(
-        '<sphere radius="0.1"/></geometry></visual>',
-        '<mesh filename="package://bot_pkg/a.stl"/></geometry></visual>',
-    )
-    build_tree(project, {"ros/bot.urdf": urdf, "ros/bot_pkg/a.stl": "solid a\nendsolid a\n"})
-    (project / "robot.yaml").write_text(HEADER + "    packages: {bot_pkg: ros/bot_pkg}\n")
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.out + run.err
-    assert "bot.urdf:13:" in run.err and "<mesh> geometry is not written" in run.err
-    assert snapshot(project) == before
-
-
 def test_a_prismatic_joint_is_refused_at_its_joint(project: Path) -> None:
     build_tree(project, {"ros/bot.urdf": URDF.replace('type="revolute"', 'type="prismatic"')})
     (project / "robot.yaml").write_text(HEADER)

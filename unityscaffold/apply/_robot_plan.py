@@ -1,5 +1,6 @@
 """The file half of the ``robots:`` section: each URDF imported once per plan (``urdf``
-stage), and the asset files it makes (materials, STL meshes) with their ``.meta`` files.
+stage), and the asset files it makes (materials, STL meshes and prefabs, copied models and
+their textures) with their ``.meta`` files.
 
 The scene half (``_robots``) places the same import into the robot's scene.
 """
@@ -121,13 +122,15 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
         # pruned with its asset)
         meta = native_format_meta(guid, main).encode()
         metas.append(DesiredFile(root / f"{asset}.meta", meta, create_only=True))
+    _model_files(imported, root, assets, salt, guids, files, metas)
+    every = [*imported.files, *(model.path for model in imported.model_assets)]
     return PlannedRobot(
         entry,
         imported,
         entry.gameobject or name,
         assets,
         tuple(files),
-        tuple(metas + _folder_metas(root, assets, imported.files, salt)),
+        tuple(metas + _folder_metas(root, assets, every, salt)),
         guids,
     )
 
@@ -157,6 +160,27 @@ def _check_default_names(imported: RobotImport, entry: RobotEntry) -> None:
             + " and ".join(key for _, key in unusable)
             + f" (line {entry.locations.item.line})",
         )
+
+
+def _model_files(
+    imported: RobotImport,
+    root: Path,
+    assets: str,
+    salt: str,
+    guids: dict[str, str],
+    files: list[DesiredFile],
+    metas: list[DesiredFile],
+) -> None:
+    """The STL prefabs, the copied models and their textures (``RobotImport.model_assets``):
+    every GUID first, as a prefab names its Mesh assets by theirs."""
+    for model in imported.model_assets:
+        asset = f"{assets}/{model.path}"
+        guids[model.path] = meta_guid(root / f"{asset}.meta", salt, asset)
+    for model in imported.model_assets:
+        asset = f"{assets}/{model.path}"
+        files.append(DesiredFile(root / asset, model.content(guids.__getitem__)))
+        meta = model.meta(guids[model.path]).encode()
+        metas.append(DesiredFile(root / f"{asset}.meta", meta, create_only=True))
 
 
 def _folder_metas(root: Path, assets: str, files: Iterable[str], salt: str) -> list[DesiredFile]:

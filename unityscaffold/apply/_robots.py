@@ -6,31 +6,27 @@ scene, known by fileIDs derived from the robot's GameObject path and each object
 enforced on every run; what the user added (components, children, fields the import leaves
 alone) is kept (``unity.owned``).
 
-The seam for model files: a visual's or collision's ``<mesh>`` is an object of role
-``Role.MODEL`` (key ``link[i]/visual[j]/shape``), which is no GameObject of the scene's own but
-an instance of a model or prefab: ``_Writer._model`` is to add its documents (the
-``ModelInstance`` in ``RobotImport.models[key]``, laid out by
-``unity.prefabinstance.instance_documents``, each an ``OwnedDocument`` whose fileID comes from
-``self.file_id(key, role, class_id)`` per ``scene_roles()``) and return the fileID of its root's
-stripped Transform, which its parent lists among its children; ``sync_owned`` writes such
+A visual's or collision's ``<mesh>`` is an object of role ``Role.MODEL`` (key
+``link[i]/visual[j]/shape``), which is no GameObject of the scene's own but an instance of a
+model or prefab: ``_Writer._model`` adds its documents (``_robot_models``: the
+``ModelInstance`` in ``RobotImport.models[key]``, laid out by ``unity.prefabinstance``) and
+lists its root's stripped Transform among its parent's children; ``sync_owned`` writes such
 documents whole and ``remove_owned`` removes them when the URDF drops the mesh. Its asset files
-(``RobotImport.model_assets``) go with the others in ``_robot_plan``. Until that is written,
-``_refuse_unwritten`` stops a URDF with a mesh geometry with a located error at the ``<mesh>``
-element: never a robot with holes in it.
+(``RobotImport.model_assets``) go with the others in ``_robot_plan``.
 """
 
 from __future__ import annotations
 
 import functools
-import re
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._lock import LockFile, LockRobot
+from unityscaffold.apply._robot_models import model_documents
 from unityscaffold.apply._robot_plan import PlannedRobot
-from unityscaffold.errors import Diagnostic, LocatedError, SourceLocation, UserError, located_at
+from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.manifest.model import SceneObject
 from unityscaffold.unity import AssetRef, InlineMap, ObjectRef, SceneDocument
 from unityscaffold.unity.builtins import builtin_class
@@ -43,7 +39,6 @@ from unityscaffold.unity.owned import (
 )
 from unityscaffold.unity.rotation import euler_to_quaternion
 from unityscaffold.unity.values import FieldValue
-from unityscaffold.urdf import Robot
 from unityscaffold.urdf.cylinder import cylinder_collider_mesh
 from unityscaffold.urdf.objects import (
     CYLINDER_MESH,
@@ -58,7 +53,6 @@ from unityscaffold.urdf.objects import (
 __all__ = ["place_robots"]
 
 _MATERIAL_FILE_ID = 2100000
-_KEY_PART = re.compile(r"(\w+)\[(\d+)\]")
 # the rest of HingeJoint's m_Limits, which the import leaves at a new joint's values
 _LIMITS_REST = {"bounciness": 0.0, "bounceMinVelocity": 0.2, "contactDistance": 0.0}
 
@@ -71,8 +65,6 @@ def place_robots(
     scene = editor.plan.relative
     here = [robot for robot in robots if robot.entry.scene == scene]
     for robot in here:
-        with located_at(robot.entry.locations.of("urdf")):
-            _refuse_unwritten(robot)
         with located_at(robot.entry.locations.item):
             _place(ctx, editor, robot, lock.robot_ids(scene, robot.gameobject))
     placed = {robot.gameobject for robot in here}
@@ -209,9 +201,18 @@ class _Writer:
         ]
 
     def _model(self, obj: ImportedObject, parent: int) -> int:
-        """The seam for model files (see the module's docstring): the instance's documents
-        added to ``documents``, and the fileID of its root's stripped Transform returned."""
-        raise AssertionError(f"{obj.key}: mesh geometry is refused before it is written")
+        """A mesh geometry (see the module's docstring): the instance's documents added to
+        ``documents``, and the fileID of its root's stripped Transform returned."""
+        transform, documents = model_documents(
+            self.robot.imported.models[obj.key],
+            key=obj.key,
+            file_id=self.file_id,
+            parent=parent,
+            guids=self.robot.guids,
+            convex=self.robot.entry.convex,
+        )
+        self.documents += documents
+        return transform
 
     def _object(self, obj: ImportedObject, parent: int, path: str) -> OwnedObject:
         components = tuple(
@@ -343,30 +344,3 @@ def _with_switches(
         fields = [(n, v) for n, v in fields if n != "m_Convex"]
         extra.append(("m_Convex", entry.convex))
     return fields + extra
-
-
-def _refuse_unwritten(robot: PlannedRobot) -> None:
-    """Mesh geometry (the model seam, see the module's docstring) is not written yet: refused
-    at its element. (A joint that needs a ConfigurableJoint is refused by the import.)"""
-    urdf = robot.imported.robot
-    problems = []
-    for _, obj in robot.imported.objects.walk():
-        if obj.role is Role.MODEL:
-            problems.append(
-                (
-                    _element(urdf, obj.key),
-                    "a <mesh> geometry is not written into scenes yet",
-                    "use a box, cylinder or sphere for now",
-                )
-            )
-    if problems:
-        raise LocatedError(Diagnostic(where, what, hint=hint) for where, what, hint in problems)
-
-
-def _element(urdf: Robot, key: str) -> SourceLocation:
-    """Where the ``<mesh>`` of ``link[i]/visual[j]/shape`` (or collision) is written."""
-    found = dict((name, int(i)) for name, i in _KEY_PART.findall(key))
-    link = urdf.links[found["link"]]
-    if "visual" in found:
-        return link.visuals[found["visual"]].geometry.location
-    return link.collisions[found["collision"]].geometry.location
