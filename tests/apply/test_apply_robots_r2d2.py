@@ -45,27 +45,11 @@ SCENE = "Assets/Scenes/gazebo_simulation_scene_ROS2_1_Camera.unity"
 Label = str
 #: Parts of the COMPLETED scene whose writer has not landed, by what they await: a predicate on
 #: a GameObject's label (its path with sibling numbers) that leaves it (and all under it) out.
-PENDING: dict[str, Callable[[Label], bool]] = {
-    # the <mesh> visuals and collisions (l_finger, l_finger_tip .dae models), which the scene
-    # writer refuses until model instances are written (apply/_robots.py, _Writer._model);
-    # until then _urdf gives those parts a box, and the parts are not compared. With them,
-    # _labels must also name an instance's stripped documents and added MeshColliders (by the
-    # instance's label and role), so that references to them compare.
-    "mesh models": lambda label: label in _MESH_PARTS,
-}
+PENDING: dict[str, Callable[[Label], bool]] = {}
 #: Fields left out of the comparison, by (component class, field), with why.
 PENDING_FIELDS: dict[tuple[str, str], str] = {}
 #: Fields of ROS# 2.2.1 that the sample scene, saved with an earlier ROS#, does not have.
 NEWER = {("CompressedImageSubscriber", "EnsureThreadSafety")}
-_MESH_PARTS: set[Label] = set()  # filled from the COMPLETED scene: the parts holding a model
-
-
-def _urdf() -> str:
-    """The tutorial's URDF; its <mesh> geometries as boxes until model instances are written."""
-    text = (STEP / "custom_r2d2.urdf").read_text(encoding="utf-8")
-    if "mesh models" in PENDING:
-        text = re.sub(r"<mesh filename=\"[^\"]*\"\s*/>", '<box size="0.1 0.1 0.1"/>', text)
-    return text
 
 
 def _manifest() -> str:
@@ -112,7 +96,7 @@ def scenes(tmp_path_factory: pytest.TempPathFactory) -> tuple[SceneDocument, Sce
     assert run_cli("init", str(project), "--ros", "2").code == 0
     shutil.copy(START, project / SCENE)
     (project / "ros").mkdir()
-    (project / "ros/custom_r2d2.urdf").write_text(_urdf(), encoding="utf-8")
+    shutil.copy(STEP / "custom_r2d2.urdf", project / "ros/custom_r2d2.urdf")
     shutil.copytree(ASSETS / "urdf_tutorial", project / "ros/urdf_tutorial")
     (project / "robot.yaml").write_text(_manifest(), encoding="utf-8")
     run = run_cli("apply", str(project / "robot.yaml"))
@@ -121,14 +105,7 @@ def scenes(tmp_path_factory: pytest.TempPathFactory) -> tuple[SceneDocument, Sce
     assert again.code == 0, again.out
     _ASSET_NAMES.update(_guids(ASSETS, "Urdf/file_server2"))
     _ASSET_NAMES.update(_guids(project / "Assets/Urdf/file_server2", "Urdf/file_server2"))
-    completed = SceneDocument.load(COMPLETED)
-    _MESH_PARTS.update(
-        _labels(completed)[go.transform_id or 0].rsplit("/Transform", 1)[0]
-        for _, go in completed.tree()
-        if go.is_prefab_instance and go.transform_id
-    )
-    _MESH_PARTS.update(_mesh_parts(completed))
-    return completed, SceneDocument.load(project / SCENE)
+    return SceneDocument.load(COMPLETED), SceneDocument.load(project / SCENE)
 
 
 _ASSET_NAMES: dict[str, str] = {}
@@ -142,18 +119,6 @@ def _guids(folder: Path, named: str) -> dict[str, str]:
         if match:
             found[match.group(1)] = f"{named}/{meta.relative_to(folder).as_posix()[:-5]}"
     return found
-
-
-def _mesh_parts(scene: SceneDocument) -> set[Label]:
-    """The visual and collision objects whose child is a model instance."""
-    labels = _go_labels(scene)
-    parts = set()
-    for _, go in scene.tree():
-        if go.is_prefab_instance:
-            parent = scene.hierarchy.nodes[go.file_id].parent
-            if parent is not None:
-                parts.add(labels[parent])
-    return parts
 
 
 def _go_labels(scene: SceneDocument) -> dict[int, Label]:
@@ -177,6 +142,7 @@ def _labels(scene: SceneDocument) -> dict[int, Label]:
     for file_id, label in list(labels.items()):
         go = scene.gameobject(file_id)
         if go.is_prefab_instance:
+            labels.update(_instance_labels(scene, go, label))
             continue
         seen: dict[str, int] = {}
         for comp in scene.components_of(go):
@@ -188,6 +154,23 @@ def _labels(scene: SceneDocument) -> dict[int, Label]:
                 if isinstance(mesh, dict) and mesh.get("fileID", "0") != "0" and "guid" not in mesh:
                     labels[int(mesh["fileID"])] = f"{label}/{kind}#{n}.m_Mesh"
     return labels
+
+
+def _instance_labels(scene: SceneDocument, go: GameObject, label: Label) -> dict[int, Label]:
+    """A model instance's documents (``go`` is its PrefabInstance) by label: its root's
+    stripped Transform, the stripped GameObjects components were added to, those components."""
+    found = {}
+    held = f"m_PrefabInstance: {{fileID: {go.file_id}}}"
+    for doc in scene.documents():
+        if doc.stripped and doc.class_id == 4 and held in doc.text:
+            found[doc.file_id] = f"{label}/Transform#0"
+        if doc.stripped and doc.class_id == 1 and held in doc.text:
+            found[doc.file_id] = f"{label}/GameObject#stripped"
+            on = f"m_GameObject: {{fileID: {doc.file_id}}}"
+            for added in scene.documents():
+                if on in added.text:
+                    found[added.file_id] = f"{label}/{added.type_name}#added"
+    return found
 
 
 def _excluded(label: Label) -> bool:
@@ -334,3 +317,33 @@ def test_the_inline_cylinder_meshes_are_the_completed_scenes_text_for_text(
     theirs = meshes(completed)
     assert len(theirs) == 6
     assert meshes(ours) == theirs
+
+
+def test_the_model_instances_are_the_completed_scenes(
+    scenes: tuple[SceneDocument, SceneDocument],
+) -> None:
+    """Each ``.dae`` visual and collision: the PrefabInstance (source, parent, every change,
+    removed and added components), its stripped objects and the MeshColliders it adds, every
+    fileID and GUID named by what it points at."""
+    completed, ours = scenes
+
+    def instances(scene: SceneDocument) -> dict[Label, object]:
+        labels = _labels(scene)
+        found: dict[Label, object] = {}
+        for go in _compared(scene):
+            if not go.is_prefab_instance:
+                continue
+            label = labels[go.file_id]
+            found[label] = _named(_fields(scene, go.file_id), labels)
+            for file_id, named in labels.items():
+                if named.startswith(f"{label}/"):
+                    found[named] = _named(_fields(scene, file_id), labels)
+        return found
+
+    theirs = instances(completed)
+    assert sum(label.endswith("#added") for label in theirs) == 4
+    assert len(theirs) == 8 + 8 + 4 + 4  # instances, stripped Transforms and GameObjects, colliders
+    mine = instances(ours)
+    assert sorted(mine) == sorted(theirs)
+    different = [label for label in theirs if not _same(mine[label], theirs[label])]
+    assert different == [], [(label, mine[label], theirs[label]) for label in different]
