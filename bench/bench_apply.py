@@ -15,10 +15,10 @@ no-op with the record off and `apply --check`, each a whole process, with the co
 the cost per topic should stay flat as N grows.
 
 Robots: `robots:` entries applied into a scene from clean (scene, lock and the robot's assets
-reset) and the no-op re-apply, as whole processes: ROS#'s r2d2 (the tutorial's URDF, read from
-$UNITYSCAFFOLD_VENDOR or ../shared/vendor; its <mesh> geometries become boxes while the scene
-writer refuses meshes) and a generated robot of 500 links (bench_urdf's). Aims: r2d2 from clean
-under 1 s, its no-op within the sample's no-op aim.
+reset) and the no-op re-apply, as whole processes: ROS#'s r2d2 (the tutorial's URDF and its two
+COLLADA models, read from $UNITYSCAFFOLD_VENDOR or ../shared/vendor), a generated robot of 500
+links (bench_urdf's) and one of 500 links with STL visuals and collisions (bench_models', 50
+files of 2,000 facets). Aims: r2d2 from clean under 1 s, its no-op within the sample's no-op aim.
 
 Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...] [--parts sample,robots,sweep]
 """
@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import re
 import resource
 import shutil
 import statistics
@@ -200,12 +199,12 @@ R2D2 = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
 
 
 def robots(rounds: int, work: Path) -> None:
+    from bench_models import stl_robot  # 500 links with STL visuals and collisions
     from bench_urdf import robot  # the generated robot of bench_urdf.py
 
     r2d2 = (R2D2 / "custom_r2d2.urdf").read_text(encoding="utf-8")
-    r2d2 = re.sub(r'<mesh filename="[^"]*"\s*/>', '<box size="0.1 0.1 0.1"/>', r2d2)
-    cases = {"r2d2": r2d2, "500 links": robot(500).decode()}
-    print(f"robots, {rounds} rounds (r2d2's <mesh> geometries as boxes)")
+    cases = {"r2d2": r2d2, "500 links": robot(500).decode(), "500 STL links": ""}
+    print(f"robots, {rounds} rounds")
     for label, urdf in cases.items():
         project = work / "robots" / label.replace(" ", "_")
         subprocess.run(
@@ -214,6 +213,12 @@ def robots(rounds: int, work: Path) -> None:
             stdout=subprocess.DEVNULL,
             env=ENV,
         )
+        if label == "r2d2":  # its package beside the URDF, where ROS# looks for it
+            models = R2D2 / "Urdf/file_server2/urdf_tutorial"
+            shutil.copytree(models, project / "urdf_tutorial", ignore=_metas)
+        elif label == "500 STL links":
+            urdf = stl_robot(project / "stl", 500, 50, 2000).read_text(encoding="utf-8")
+            shutil.move(project / "stl" / "desc", project / "desc")
         (project / "robot.urdf").write_text(urdf, encoding="utf-8")
         manifest = project / "robot.yaml"
         text = manifest.read_text(encoding="utf-8")
@@ -234,6 +239,10 @@ def robots(rounds: int, work: Path) -> None:
         print(_line(f"{label} from clean", clean, "(aim < 1000 ms for r2d2)"), flush=True)
         print(_line(f"{label} no-op", noop, "(plans, writes the no-op record)"), flush=True)
         print(_line(f"{label} replayed", replayed, "(the next no-op)"), flush=True)
+
+
+def _metas(folder: str, names: list[str]) -> list[str]:
+    return [name for name in names if name.endswith(".meta")]
 
 
 if __name__ == "__main__":
