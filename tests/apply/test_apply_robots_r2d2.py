@@ -9,11 +9,12 @@ head for the subscriber's images). The result is compared with the COMPLETED sce
 Unity 2022.3 saved, every fileID and GUID named by what it points at (a GameObject by its path
 with sibling numbers, a component by its GameObject and class, an asset by its path): the tree,
 names, component order, every field of every component (floats bit for bit as float32,
-Transform positions and rotations within 1e-6), and the inline cylinder Meshes text for text.
+Transform positions and rotations within 1e-6), the inline cylinder Meshes text for text, and
+the model instances (each PrefabInstance with its changes, removed and added components, its
+stripped objects and the MeshColliders it adds).
 
-What has not landed yet is excluded by name in ``PENDING``, each with the part of the scene it
-covers; the helper that lands one deletes its entry (and its stand-in in ``_manifest`` or
-``_urdf``), and the comparison then covers that part too.
+What a later change cannot write yet is excluded by name in ``PENDING`` (nothing today), each
+with the part of the scene it covers; the comparison covers everything else.
 """
 
 from __future__ import annotations
