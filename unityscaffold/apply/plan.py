@@ -25,6 +25,7 @@ from unityscaffold.apply._lock import (
 from unityscaffold.apply._moves import find_moves
 from unityscaffold.apply._prune import plan_pruning
 from unityscaffold.apply._robot_plan import plan_robots
+from unityscaffold.apply._rosbridge2 import rosbridge2_notes
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
 from unityscaffold.apply._scriptmetas import plan_script_metas
@@ -172,6 +173,7 @@ def make_plan(
     target_notes = target_for(manifest).notes(project, rossharp)
     notes = [*target_notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
     notes += [s.warning for s in code.messages.skipped if s.warning]
+    notes += rosbridge2_notes(manifest, registry)
     new_lock = LockFile(
         files={
             **pruning.kept_files,
