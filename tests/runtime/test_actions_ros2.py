@@ -1,27 +1,36 @@
 """ROS 2 actions through ROS#'s real action API (``RosSocket.SendActionGoalRequest``,
 ``CancelActionGoalRequest``, ``AdvertiseAction``, ``RespondFeedback``, ``RespondResult``,
 ``UnadvertiseAction``; ROS# built with ``-define:ROS2``) with the classes unityscaffold
-generates for diffbot_msgs/action/Dock, against a double of rosbridge's ROS 2 action protocol
-(rosbridge2_double.py: rosbridge for ROS 2 cannot run here). Both roles: C# client -> the
-double's action server, and the double as a ROS 2 client -> the C# action server; each with a
-goal that succeeds and one that is cancelled (csharp/Ros2ActionProbe.cs)."""
+generates for diffbot_msgs/action/Dock, through the real rosbridge 2.x against rclpy's action
+server and client (data/ros2/action_node.py). Both roles: the C# client -> rclpy's server, and
+rclpy's client -> the C# action server; each with a goal that succeeds and one that is
+cancelled (csharp/Ros2ActionProbe.cs), and a goal the rclpy server refuses."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
+from processes import wait_for
+
 from tests.runtime.client import CSHARP, mcs_compile
-from tests.runtime.dock_action import DOCK, TIMEOUT, dock
 from tests.runtime.lines import start
-from tests.runtime.rosbridge2_double import STATUS_CANCELED, STATUS_SUCCEEDED, running
-from tests.runtime.runtime_helpers import SAMPLE_INTERFACES, write_code
+from tests.runtime.ros2 import Ros2, running_rosbridge2
+from tests.runtime.runtime_helpers import SAMPLE_ROS2_INTERFACES, write_code
 from unityscaffold.codegen import Options, generate
 from unityscaffold.interfaces.model import Dialect
 from unityscaffold.interfaces.registry import Registry
 
+DATA = Path(__file__).parent / "data" / "ros2"
+TIMEOUT = 60  # seconds; a guard against a hang only
+# action_msgs/msg/GoalStatus
+STATUS_SUCCEEDED, STATUS_CANCELED = 4, 5
+# What rosbridge 2.1.0 logs for a goal the server refused, the only trace of it.
+REFUSED = "Action goal was rejected"
+
 
 def _build(mcs: str, client: Path, out: Path) -> Path:
-    registry = Registry.load(Dialect.ROS2, [SAMPLE_INTERFACES])
+    registry = Registry.load(Dialect.ROS2, [SAMPLE_ROS2_INTERFACES])
     code = generate(registry, [registry.get("diffbot_msgs/action/Dock")], Options(Dialect.ROS2))
     folder = client.parent
     exe = folder / "Ros2ActionProbe.exe"
@@ -41,79 +50,72 @@ def _values(lines: list[str], key: str) -> list[str]:
 
 
 def test_ros2_actions_goal_feedback_result_cancel_both_ways(
-    mcs: str, mono: str, rossharp_ros2_client: Path, tmp_path: Path
+    ros2: Ros2, mcs: str, mono: str, rossharp_ros2_client: Path, tmp_path: Path
 ) -> None:
     exe = _build(mcs, rossharp_ros2_client, tmp_path / "src")
-    with running(DOCK) as double:
-        double.served["/dock_double"] = dock
-        probe = start([mono, str(exe), double.url, "/dock_double", "/dock_cs"])
+    result = tmp_path / "node.json"
+    # With rosbridge's default, a cancel would wait for its goal to end (README, limitations).
+    with running_rosbridge2(
+        ros2, rosapi=False, parameters={"send_action_goals_in_new_thread": "true"}
+    ) as bridge:
+        node_args = ["/dock_py", "/dock_cs", str(result), str(TIMEOUT)]
+        node = ros2.run_node(DATA / "action_node.py", *node_args)
+        probe = None
         try:
-            # The double as a ROS 2 client of the C# server.
-            assert double.wait_advertised("/dock_cs", TIMEOUT), probe.finish()
-            first, succeeding = double.send_goal("/dock_cs", {"dock_id": "from-double"})
-            succeeding.done.wait(TIMEOUT)
-            second, cancelled = double.send_goal("/dock_cs", {"dock_id": "cancel-me"})
-            cancelled.first_feedback.wait(TIMEOUT)
-            double.cancel_goal("/dock_cs", second)
-            cancelled.done.wait(TIMEOUT)
-            # The C# client's three goals, the last one refused.
-            probe.wait_for(lambda line: line.startswith("Error in ConsumeResultResponse"), TIMEOUT)
+            assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
+            probe = start([mono, str(exe), bridge.url, "/dock_py", "/dock_cs"])
+            node.wait_for(lambda line: line == "done", TIMEOUT + 30)
+            probe.wait_for(lambda line: line.endswith(" reject-me"), TIMEOUT)
+            wait_for("the refusal", lambda: REFUSED in bridge.log_text(), TIMEOUT, bridge.logs)
         finally:
-            output = probe.finish()
-        double.wait_unadvertised("/dock_cs", TIMEOUT)
+            node_output = node.finish()
+            output = probe.finish() if probe else ""
+    assert result.exists(), node_output
+    seen = json.loads(result.read_text())
     lines = output.splitlines()
-    assert double.errors == [], f"{double.errors}\n{output}"
+    report = f"{node_output}\n--- C#:\n{output}\n--- rosbridge:\n{bridge.log_text()[-3000:]}"
 
-    # C# client -> the double's server.
-    assert _values(lines, "client_sent") == [
-        "/dock_double:0 alpha",
-        "/dock_double:1 cancel-me",
-        "/dock_double:3 reject-me",
-    ], output
-    goals = [m for m in double.received if m["op"] == "send_action_goal"]
-    assert [(g["action_type"], g["feedback"], g["args"]) for g in goals] == [
-        ("diffbot_msgs/action/Dock", True, {"dock_id": "alpha"}),
-        ("diffbot_msgs/action/Dock", True, {"dock_id": "cancel-me"}),
-        ("diffbot_msgs/action/Dock", True, {"dock_id": "reject-me"}),
-    ]
+    # C# client -> rclpy's server.
+    sent = _values(lines, "client_sent")
+    assert [s.split(" ", 1)[1] for s in sent] == ["alpha", "cancel-me", "reject-me"], report
+    alpha, cancel_me, _ = (s.split(" ", 1)[0] for s in sent)
+    assert seen["server_decided"] == [["alpha", True], ["cancel-me", True], ["reject-me", False]]
     assert _values(lines, "client_feedback") == [
-        "/dock_double:0 /dock_double 2.5",
-        "/dock_double:0 /dock_double 1.25",
-        "/dock_double:1 /dock_double 9.5",
-    ], output
+        f"{alpha} /dock_py 2.5",
+        f"{alpha} /dock_py 1.25",
+        f"{cancel_me} /dock_py 9.5",
+    ], report
     # ROS#'s cancel names the goal by its send_action_goal id; the result of the cancelled goal
     # comes to that goal's result handler (the handler given to CancelActionGoalRequest is
     # never called: rosbridge sends nothing with the id ROS# registers it under).
-    assert _values(lines, "client_cancel") == ["/dock_double:1"], output
-    assert [m["id"] for m in double.received if m["op"] == "cancel_action_goal"] == [
-        "/dock_double:1"
-    ]
+    assert _values(lines, "client_cancel") == [cancel_me], report
+    assert seen["server_cancel"] == ["cancel-me"], report
     assert _values(lines, "client_result") == [
-        f"/dock_double:0 /dock_double {STATUS_SUCCEEDED} True True 87.5",
-        f"/dock_double:1 /dock_double {STATUS_CANCELED} True False -1",
-    ], output
-    assert _values(lines, "client_cancel_response") == [], output
-    # A refused goal: rosbridge's failure result carries a text as "values", which ROS# cannot
-    # read into the result class; it writes this line and never calls the result handler.
-    assert any(line.startswith("Error in ConsumeResultResponse: ") for line in lines), output
+        f"{alpha} /dock_py {STATUS_SUCCEEDED} True True 87.5",
+        f"{cancel_me} /dock_py {STATUS_CANCELED} True False -1",
+    ], report
+    assert _values(lines, "client_cancel_response") == [], report
+    # A refused goal: rosbridge 2.1.0 raises the refusal in a callback of its own, which rclpy
+    # only logs, and sends the client nothing at all (README, limitations).
+    assert REFUSED in bridge.log_text(), report
+    assert not any(line.startswith("Error in ConsumeResultResponse") for line in lines), report
 
-    # The double (a ROS 2 client) -> the C# server.
-    assert _values(lines, "server_goal") == [
-        f"{first} /dock_cs diffbot_msgs/action/Dock True from-double",
-        f"{second} /dock_cs diffbot_msgs/action/Dock True cancel-me",
-    ], output
-    assert _values(lines, "server_cancel") == [f"{second} /dock_cs"], output
-    assert succeeding.feedback == [{"distance_remaining": 3.5}]
-    assert succeeding.result == {
-        "values": {"docked": True, "battery": 42.25},
+    # rclpy's client -> the C# server.
+    served = _values(lines, "server_goal")
+    assert [s.split(" ")[-1] for s in served] == ["from-rclpy", "cancel-me"], report
+    assert all(" /dock_cs diffbot_msgs/action/Dock True " in s for s in served), report
+    assert len(_values(lines, "server_cancel")) == 1, report
+    client = seen["client"]
+    assert client["from-rclpy"] == {
+        "accepted": True,
         "status": STATUS_SUCCEEDED,
-        "result": True,
-    }
-    assert cancelled.feedback == [{"distance_remaining": 3.5}]
-    assert cancelled.result == {
-        "values": {"docked": False, "battery": -1.0},
+        "result": [True, 42.25],
+    }, report
+    assert client["cancel_accepted"], report
+    assert client["cancel-me"] == {
+        "accepted": True,
         "status": STATUS_CANCELED,
-        "result": True,
-    }
-    assert double.unadvertised == ["/dock_cs"]
-    assert "Unhandled Exception" not in output
+        "result": [False, -1.0],
+    }, report
+    assert client["feedback"] == {"from-rclpy": [3.5], "cancel-me": [3.5]}, report
+    assert "Unhandled Exception" not in output, report

@@ -2,7 +2,7 @@
 //   actions: [{name: /dock_py, role: client}, {name: /dock_cs, role: server}]
 // (diffbot_msgs/action/Dock, on GameObject Robot), run in the UnityEngine stand-in's frame loop
 // (UnityEngineRuntime.cs) with ROS#'s real RosConnector and client. The user halves below do
-// what data/action_node.py's side expects (and the rosbridge 2 double's):
+// what data/action_node.py's side expects (and data/ros2/action_node.py's, for ROS 2):
 // - client: goal "alpha" once connected; when its result comes, goal "cancel-me", cancelled at
 //   its first feedback; with ROS 2 then goal "reject-me", which the other side refuses;
 //   with ROS 1 also, at once, goal "late" from a second client (/dock_late, DockLateActionClient);

@@ -1,6 +1,6 @@
 // Test program: ROS 2 actions through ROS#'s real RosSocket action API (ROS# built with
 // -define:ROS2) with the classes unityscaffold generates for diffbot_msgs/action/Dock, against
-// the rosbridge ROS 2 double (rosbridge2_double.py). Both roles at once:
+// the real rosbridge 2.x and rclpy (data/ros2/action_node.py). Both roles at once:
 // - client of CLIENT_ACTION: goal "alpha" (runs to success), then "cancel-me", cancelled once
 //   its first feedback arrives, then "reject-me" (the server refuses it);
 // - server of SERVER_ACTION: "cancel-me" runs until cancelled (then CANCELED), any other goal
