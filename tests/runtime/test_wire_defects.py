@@ -17,6 +17,7 @@ from tests.runtime.bridge import Bridge
 from tests.runtime.runtime_helpers import build_echo, ros1_registry, round_trip
 
 NO_ANSWER = "no answer"
+LONG = "0.7704962251833261"  # a double whose shortest exact form has 17 digits
 
 
 def _run(
@@ -85,6 +86,7 @@ def test_values_rossharp_changes(
         _string("backslash", "a\\b"),
         {"key": "NaN", "type": "geometry_msgs/Vector3", "set": {"x": {"float": "nan"}}},
         {"key": "-inf", "type": "geometry_msgs/Vector3", "set": {"y": {"float": "-inf"}}},
+        {"key": "17 digits", "type": "geometry_msgs/Point", "set": {"z": {"float": LONG}}},
     ]
     results = _run(bridge, mcs, mono, rossharp_client, tmp_path, entries, seed=103)
     assert results == {
@@ -100,6 +102,9 @@ def test_values_rossharp_changes(
         # rosbridge writes NaN/Infinity, which JSON lacks; the message never reaches C#.
         "NaN": NO_ANSWER,
         "-inf": NO_ANSWER,
+        # Newtonsoft writes doubles with "R", which Mono's class library shortens to 15 digits
+        # when those parse back to a value close enough (not to the same one).
+        "17 digits": f".z: got 0.770496225183326, sent {LONG}",
     }
 
 
