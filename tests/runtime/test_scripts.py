@@ -1,29 +1,50 @@
 """The sample project's generated scripts, run: in the UnityEngine stand-in's frame loop
 (csharp/UnityEngineRuntime.cs) with ROS#'s real RosConnector and client, against the real
-rosbridge, with a rospy node on the other side (data/script_node.py)."""
+rosbridge, with a rospy node on the other side (data/script_node.py); and the same scripts
+generated for ROS 2 (the sample's topics, its ROS 2 diffbot_msgs) against the real rosbridge 2.x
+with an rclpy node (data/ros2/script_node.py)."""
 
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
+from collections.abc import Callable
 from pathlib import Path
 
-from helpers import SYSTEM_PYTHON
+from helpers import SYSTEM_PYTHON, run_cli
 
 from tests.runtime.bridge import DATA, Bridge, free_port, wait_for
 from tests.runtime.client import CSHARP, mcs_compile
+from tests.runtime.ros2 import Rosbridge2
+from tests.runtime.runtime_helpers import SAMPLE_ROS2_INTERFACES
 
 REPO = Path(__file__).resolve().parents[2]
 GENERATED = REPO / "sample_project" / "unity" / "Assets" / "RosGenerated"
 RATE_TOLERANCE = 0.3  # of the 10 Hz rate, over a 4 s window on a shared machine
+# The sample's topics (sample_project/robot.yaml) for ROS 2.
+ROS2_MANIFEST = """\
+version: 1
+ros: 2
+scene: Assets/Scenes/Main.unity
+interfaces: [ws]
+connector: {gameobject: RosConnector, url: "ws://localhost:9090", serializer: newtonsoft}
+topics:
+  - {name: /cmd_vel, type: geometry_msgs/msg/Twist, direction: publish, rate: 10, gameobject: Robot}
+  - {name: /odom, type: nav_msgs/msg/Odometry, direction: subscribe, gameobject: Robot}
+  - {name: /scan, type: sensor_msgs/msg/LaserScan, direction: subscribe, throttle: 100, queue: 1,
+     gameobject: Robot/Lidar}
+  - {name: /base_status, type: diffbot_msgs/msg/BaseStatus, direction: subscribe,
+     gameobject: Robot}
+"""
 
 
-def _build(mcs: str, client: Path, package: Path) -> Path:
+def _build(mcs: str, client: Path, package: Path, generated: Path = GENERATED) -> Path:
     folder = client.parent
     engine = folder / "UnityEngine.dll"
     mcs_compile(mcs, [CSHARP / "UnityEngineRuntime.cs"], engine)
     connector = package / "Runtime" / "RosBridgeClient" / "RosCommunication" / "RosConnector.cs"
-    plumbing = [p for p in sorted(GENERATED.rglob("*.cs")) if not p.name.endswith(".User.cs")]
+    plumbing = [p for p in sorted(generated.rglob("*.cs")) if not p.name.endswith(".User.cs")]
     exe = folder / "Scenario.exe"
     references = [engine, client, folder / "Newtonsoft.Json.dll", folder / "websocket-sharp.dll"]
     mcs_compile(
@@ -32,6 +53,7 @@ def _build(mcs: str, client: Path, package: Path) -> Path:
         exe,
         references=references,
         target="exe",
+        defines=["ROS2"] if generated != GENERATED else [],
     )
     return exe
 
@@ -58,9 +80,60 @@ def test_sample_scripts_run_in_a_frame_loop(
         text=True,
     )
     assert node.stdout and node.stdout.readline().strip() == "ready"
+    subscribed = lambda topic: _subscribed_by_rosbridge(bridge, topic)  # noqa: E731
+    _run_and_check(mono, exe, bridge.url, node, result, subscribed)
+
+
+def test_the_sample_scripts_for_ros2_run_in_a_frame_loop(
+    rosbridge2: Rosbridge2,
+    mcs: str,
+    mono: str,
+    rossharp_ros2_client: Path,
+    rossharp_package: Path,
+    tmp_path: Path,
+) -> None:
+    project = tmp_path / "ros2"
+    assert run_cli("init", str(project), "--ros", "2").code == 0
+    shutil.copytree(SAMPLE_ROS2_INTERFACES, project / "ws")
+    (project / "robot.yaml").write_text(ROS2_MANIFEST, encoding="utf-8")
+    done = run_cli("apply", str(project / "robot.yaml"))
+    assert done.code == 0, done.err
+    generated = project / "Assets" / "RosGenerated"
+    exe = _build(mcs, rossharp_ros2_client, rossharp_package, generated)
+    result = tmp_path / "node.json"
+    node = subprocess.Popen(
+        [str(rosbridge2.ros2.python), str(DATA / "ros2" / "script_node.py"), str(result)],
+        env=rosbridge2.ros2.env,
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+    )
+    assert node.stdout and node.stdout.readline().strip() == "ready"
+
+    def subscribed(topic: str) -> bool:
+        answer = rosbridge2.call("/rosapi/subscribers", {"topic": topic})
+        return "/rosbridge_websocket" in answer["values"]["subscribers"]
+
+    wait_for("rosbridge to see the node", lambda: _published(rosbridge2), 30, rosbridge2.logs)
+    _run_and_check(mono, exe, rosbridge2.url, node, result, subscribed)
+
+
+def _published(bridge: Rosbridge2) -> bool:
+    topics = set(bridge.call("/rosapi/topics")["values"]["topics"])
+    return {"/odom", "/scan", "/base_status"} <= topics
+
+
+def _run_and_check(
+    mono: str,
+    exe: Path,
+    url: str,
+    node: subprocess.Popen[str],
+    result: Path,
+    subscribed: Callable[[str], bool],
+) -> None:
     unreachable = f"ws://127.0.0.1:{free_port()}"
     scenario = subprocess.Popen(
-        [mono, str(exe), bridge.url, unreachable],
+        [mono, str(exe), url, unreachable],
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.STDOUT,
@@ -78,11 +151,11 @@ def test_sample_scripts_run_in_a_frame_loop(
                 # OnDestroy unsubscribed: rosbridge dropped its /odom subscriber, kept the others.
                 wait_for(
                     "rosbridge to drop /odom",
-                    lambda: not _subscribed_by_rosbridge(bridge, "/odom"),
+                    lambda: not subscribed("/odom"),
                     5,
                     [],
                 )
-                assert _subscribed_by_rosbridge(bridge, "/base_status")
+                assert subscribed("/base_status")
                 scenario.stdin.write("\n")
                 scenario.stdin.flush()
         assert scenario.wait(timeout=30) == 0, "\n".join(lines)

@@ -83,7 +83,11 @@ public static class Scenario
             c.RosBridgeServerUrl = args[0];
             c.Serializer = RosSocket.SerializerEnum.Newtonsoft_JSON;
             c.protocol = Protocol.WebSocketSharp;
+#if ROS2
+            c.selectedRosVersion = RosVersion.ROS2;
+#else
             c.selectedRosVersion = RosVersion.ROS1;
+#endif
         };
         // The scripts start in the same frame as the connector, before its thread has connected.
         var connector = new GameObject("RosConnector").AddComponent<RosConnector>(settings);
