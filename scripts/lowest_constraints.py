@@ -1,7 +1,7 @@
 """Print a pip constraints file that pins every direct dependency to its declared floor.
 
 ``python3 scripts/lowest_constraints.py > lowest.txt`` then
-``pip install -c lowest.txt -e '.[test,bag]'`` installs the oldest versions ``pyproject.toml``
+``pip install -c lowest.txt -e '.[test,bag,xacro]'`` installs the oldest versions ``pyproject.toml``
 claims to support (what ``uv pip install --resolution lowest-direct`` does), with pip alone.
 Only direct requirements are pinned; what they depend on resolves as usual. A requirement with
 no ``>=`` floor (the ROS 2 interface wheels) is left free, and so is an exact ``==`` pin.
@@ -24,7 +24,7 @@ except ModuleNotFoundError:  # Python 3.10: tomli, which hatchling (a test depen
 
 PYPROJECT = Path(__file__).resolve().parent.parent / "pyproject.toml"
 #: The extras whose floors are checked; ``lint`` pins exact versions already.
-EXTRAS = ("bag", "test")
+EXTRAS = ("bag", "xacro", "test")
 
 
 def direct_requirements(project: dict[str, object]) -> list[Requirement]:

@@ -27,10 +27,11 @@ def _pins() -> dict[str, str]:
     return dict(line.split("==") for line in out.splitlines())
 
 
-def test_every_runtime_bag_and_test_floor_is_pinned() -> None:
+def test_every_runtime_bag_xacro_and_test_floor_is_pinned() -> None:
     project = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     extras = project["optional-dependencies"]
-    declared = [Requirement(t) for t in [*project["dependencies"], *extras["bag"], *extras["test"]]]
+    texts = [*project["dependencies"], *extras["bag"], *extras["xacro"], *extras["test"]]
+    declared = [Requirement(t) for t in texts]
     expected = {
         r.name.lower(): s.version
         for r in declared
@@ -42,4 +43,5 @@ def test_every_runtime_bag_and_test_floor_is_pinned() -> None:
     # the runtime dependencies a user installs are all among them
     runtime = {Requirement(t).name.lower() for t in project["dependencies"]}
     assert runtime <= set(expected)
-    assert {"typer", "jinja2", "ruamel.yaml", "pyyaml", "websockets", "rosbags"} <= set(expected)
+    known = {"typer", "jinja2", "ruamel.yaml", "pyyaml", "websockets", "rosbags", "xacro"}
+    assert known <= set(expected)

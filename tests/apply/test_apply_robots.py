@@ -189,7 +189,9 @@ def test_a_prismatic_joint_is_refused_at_its_joint(project: Path) -> None:
             "robot.yaml:7:15: error: the folder of package p",
         ),
         ("  - urdf: ros/bot.urdf\n    kinematik: true\n", "unknown key 'kinematik' in robot"),
-        ("  - urdf: ros/bot.xacro\n", "invalid value for 'urdf'"),
+        ("  - urdf: ros/bot.sdf\n", "invalid value for 'urdf'"),
+        ("  - urdf: ros/bot.urdf\n    args: [a]\n", "invalid value for 'args'"),
+        ("  - urdf: ros/bot.urdf\n    args: {a: 1}\n", "invalid value for 'a'"),
         ("  - urdf: ros/bot.urdf\n    assets: Packages/x\n", "invalid value for 'assets'"),
         (
             "  - urdf: ros/bot.urdf\n  - urdf: ros/bot.urdf\n",

@@ -107,6 +107,7 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
             packages=dict(entry.packages),
             project=manifest.path.parent,
             plugin_newline=entry.plugin_newline,
+            xacro_args=dict(entry.args),
         )
     _check_default_names(imported, entry)
     name = imported.robot.name

@@ -16,7 +16,7 @@ from unityscaffold.manifest.robot_entry import RobotEntry
 
 __all__ = ["read_robot"]
 
-EXPECT_URDF = "a .urdf file, relative to the manifest, such as ros/my_robot.urdf"
+EXPECT_URDF = "a .urdf or .xacro file, relative to the manifest, such as ros/my_robot.urdf"
 EXPECT_ASSETS = "a folder inside Assets/, such as Assets/Urdf/r2d2"
 _PACKAGE = re.compile(r"^[A-Za-z0-9_.-]+$")
 _NEWLINES = {"crlf": "\r\n", "lf": "\n"}
@@ -52,14 +52,13 @@ def read_robot(r: Reader, node: YNode, ctx: Context, base: Path) -> RobotEntry |
         gravity=r.boolean(m, "gravity"),
         convex=r.boolean(m, "convex"),
         plugin_newline=_NEWLINES[newline],
+        args=_args(r, m),
     )
     return item if urdf is not None and scene else None
 
 
 def _urdf(r: Reader, m: YMap, base: Path) -> Path | None:
-    value = r.text(
-        m, "urdf", EXPECT_URDF, URDF_SUFFIX, hint="xacro files are not read yet: run xacro first"
-    )
+    value = r.text(m, "urdf", EXPECT_URDF, URDF_SUFFIX)
     entry = m.get("urdf")
     if value is None or entry is None:
         return None
@@ -94,4 +93,21 @@ def _packages(r: Reader, m: YMap, base: Path) -> tuple[tuple[str, Path], ...]:
         )
         if folder is not None:
             found.append((item.key, folder))
+    return tuple(found)
+
+
+def _args(r: Reader, m: YMap) -> tuple[tuple[str, str], ...]:
+    entry = m.get("args")
+    if entry is None or (isinstance(entry.value, YScalar) and entry.value.value is None):
+        return ()
+    if not isinstance(entry.value, YMap):
+        r.invalid(entry, "a mapping of xacro argument name to text, such as {prefix: left_}")
+        return ()
+    found = []
+    for item in entry.value.entries:
+        value = item.value.value if isinstance(item.value, YScalar) else None
+        if not isinstance(value, str):
+            r.invalid(item, "text (quote numbers and booleans: '0.5', 'true')")
+            continue
+        found.append((item.key, value))
     return tuple(found)

@@ -16,7 +16,7 @@ from unityscaffold.manifest._keys import (
 
 __all__ = ["ROBOT", "URDF_SUFFIX"]
 
-URDF_SUFFIX = "[.]urdf$"
+URDF_SUFFIX = "[.](urdf|xacro)$"
 _FLOAT = {"type": "number", "minimum": -FLOAT32_MAX, "maximum": FLOAT32_MAX}
 _VEC3 = {"type": "array", "items": _FLOAT, "minItems": 3, "maxItems": 3}
 _ASSETS = {
@@ -32,7 +32,8 @@ ROBOT = Section(
     (
         Key(
             "urdf",
-            "The robot's `.urdf` file, relative to the manifest.",
+            "The robot's `.urdf` file, relative to the manifest, or a `.xacro` (`.urdf.xacro`) "
+            "expanded in process (needs `pip install 'unityscaffold[xacro]'`).",
             {"type": "string", "pattern": URDF_SUFFIX, "not": {"pattern": NOT_PORTABLE}},
             required=True,
         ),
@@ -48,6 +49,12 @@ ROBOT = Section(
             "Folders of the ROS packages that `package://` and `$(find)` name, relative to "
             "the manifest (`{urdf_tutorial: ros/urdf_tutorial}`). A package not listed is "
             "looked for beside the URDF, as ROS# does.",
+            {"type": ["object", "null"], "additionalProperties": STR},
+        ),
+        Key(
+            "args",
+            "Arguments of a `.xacro` `urdf`, name to text (`{prefix: left_}`); an argument "
+            "left out takes its `<xacro:arg>` default.",
             {"type": ["object", "null"], "additionalProperties": STR},
         ),
         Key(

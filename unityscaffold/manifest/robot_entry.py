@@ -16,7 +16,8 @@ class RobotEntry:
     ``assets`` are None until the URDF names the robot (their defaults are the robot's name
     and ``Assets/Urdf/<robot name>``). ``kinematic``, ``gravity`` and ``convex`` are the
     UrdfRobot inspector's switches, None to keep what the importer sets; ``plugin_newline`` is
-    the newline of the plugin texts (``\\r\\n``, as ROS#'s importer writes them on Windows)."""
+    the newline of the plugin texts (``\\r\\n``, as ROS#'s importer writes them on Windows);
+    ``args`` are the xacro arguments of a ``.xacro`` ``urdf``."""
 
     urdf: Path
     scene: str
@@ -30,3 +31,4 @@ class RobotEntry:
     gravity: bool | None = None
     convex: bool | None = None
     plugin_newline: str = "\r\n"
+    args: tuple[tuple[str, str], ...] = ()  # xacro arguments, for a .xacro ``urdf``

@@ -47,10 +47,12 @@ def import_robot(
     packages: Mapping[str, Path],
     project: Path,
     plugin_newline: str = "\r\n",
+    xacro_args: Mapping[str, str] | None = None,
 ) -> RobotImport:
     """Read ``urdf``, resolve its meshes against ``packages`` (inside ``project``) and build
-    what ROS#'s importer would: every problem is a located error, and nothing is written."""
-    robot = read_urdf(urdf)
+    what ROS#'s importer would (a ``.xacro`` expanded with ``xacro_args``): every problem is
+    a located error, and nothing is written."""
+    robot = read_urdf(urdf, packages=packages, xacro_args=xacro_args)
     refuse_configurable_joints(robot)
     meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
     files = {f"Materials/{name}": text for name, text in importer_materials(robot).items()}

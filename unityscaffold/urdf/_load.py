@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
 
 from unityscaffold.errors import DiagnosticSink, UserError
 from unityscaffold.urdf._reader import read_robot
 from unityscaffold.urdf._tree import check_tree
+from unityscaffold.urdf._xacro import expand_xacro, is_xacro
 from unityscaffold.urdf._xml import XmlSource, parse_xml
 from unityscaffold.urdf.model import Robot
 
@@ -30,13 +32,24 @@ def parse_urdf(raw: bytes, path: str = "<urdf>") -> Robot:
     return robot
 
 
-def read_urdf(path: str | Path) -> Robot:
-    """The robot in the URDF file at ``path``."""
+def read_urdf(
+    path: str | Path,
+    *,
+    packages: Mapping[str, Path] | None = None,
+    xacro_args: Mapping[str, str] | None = None,
+) -> Robot:
+    """The robot in the URDF file at ``path``; a ``.xacro`` file is expanded first, its
+    ``$(find)`` resolved through ``packages`` and its ``$(arg)`` given by ``xacro_args``."""
+    path = Path(path)
     try:
-        raw = Path(path).read_bytes()
+        if is_xacro(path) and path.is_file():
+            raw = expand_xacro(path, packages=packages or {}, args=xacro_args or {})
+            # the expanded URDF has no file of its own: its lines are the xacro output's
+            return parse_urdf(raw, f"{path} (expanded by xacro)")
+        raw = path.read_bytes()
     except OSError as error:
         raise UserError(
             f"cannot read the URDF {str(path)!r}: {error.strerror or error}",
-            hint="check the path (a .urdf file; run .xacro files through xacro first)",
+            hint="check the path (a .urdf or .xacro file)",
         ) from None
     return parse_urdf(raw, str(path))

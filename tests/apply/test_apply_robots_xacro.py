@@ -1,0 +1,172 @@
+"""A `robots:` entry naming a `.xacro`: expanded in process by PyPI's `xacro` (the `xacro`
+extra), `$(find)` resolved through the entry's `packages` only, `args` passed on; the robot is
+the one its plain URDF makes, an edit to an included file is never replayed as a no-op, and a
+xacro mistake is a located error that writes nothing."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import pytest
+from helpers import build_tree, require, run_cli, snapshot
+from test_apply_robots import URDF
+
+from tests.cli.noop_support import records, scaffold
+from unityscaffold.cli import _app
+
+require(importlib.util.find_spec("xacro"), "xacro (the `xacro` extra)")
+
+XACRO = "ros/bot_description/urdf/bot.urdf.xacro"
+MAIN = """<?xml version="1.0"?>
+<robot name="$(arg name)" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="name" default="wrong"/>
+  <xacro:include filename="$(find bot_description)/urdf/parts.xacro"/>
+  <material name="blue"><color rgba="0 0 ${blue} 1"/></material>
+  <gazebo>
+    <plugin name="p"/>
+  </gazebo>
+  <link name="base">
+    <xacro:inertial mass="2"/>
+    <visual><geometry><box size="1 2 3"/></geometry><material name="blue"/></visual>
+    <collision><geometry><cylinder radius="${radius}" length="2"/></geometry></collision>
+  </link>
+  <link name="arm">
+    <xacro:inertial mass="1"/>
+    <visual><origin xyz="0 0 ${radius}"/><geometry><sphere radius="0.1"/></geometry></visual>
+    <collision><geometry><sphere radius="0.1"/></geometry></collision>
+  </link>
+  <joint name="j" type="revolute"><origin xyz="0 0 1"/><parent link="base"/><child link="arm"/>
+    <axis xyz="0 1 0"/><limit effort="1" velocity="1" lower="-1" upper="1"/></joint>
+</robot>
+"""
+PARTS = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:property name="radius" value="0.5"/>
+  <xacro:property name="blue" value="${0.4 * 2}"/>
+  <xacro:macro name="inertial" params="mass">
+    <inertial><mass value="${mass}"/>
+      <inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0" izz="3"/></inertial>
+  </xacro:macro>
+</robot>
+"""
+HEADER = """\
+version: 1
+ros: 2
+project: .
+scene: Assets/Scenes/Main.unity
+robots:
+"""
+ENTRY = (
+    f"  - urdf: {XACRO}\n"
+    "    packages: {bot_description: ros/bot_description}\n"
+    "    args: {name: bot}\n"
+)
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    files = {"ros/bot.urdf": URDF, XACRO: MAIN, "ros/bot_description/urdf/parts.xacro": PARTS}
+    return build_tree(tmp_path / "p", files)
+
+
+def _apply(project: Path, entry: str, *extra: str):  # type: ignore[no-untyped-def]
+    (project / "robot.yaml").write_text(HEADER + entry)
+    return run_cli("apply", str(project / "robot.yaml"), *extra)
+
+
+def test_a_xacro_robot_makes_the_project_its_plain_urdf_makes(project: Path) -> None:
+    assert _apply(project, "  - urdf: ros/bot.urdf\n").code == 0
+    from_urdf = snapshot(project)
+    check = _apply(project, ENTRY, "--check")
+    assert check.code == 0, check.out + check.err
+    run = _apply(project, ENTRY)
+    assert run.code == 0, run.err
+    assert {k: v for k, v in snapshot(project).items() if k != "robot.yaml"} == {
+        k: v for k, v in from_urdf.items() if k != "robot.yaml"
+    }
+
+
+def test_an_edit_to_an_included_file_is_seen_by_the_next_check(
+    project: Path, monkeypatch: pytest.MonkeyPatch, capsysbinary: pytest.CaptureFixture[bytes]
+) -> None:
+    cache = project.parent / "cache"
+    (cache / "unityscaffold").mkdir(parents=True)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
+    monkeypatch.delenv("UNITYSCAFFOLD_NO_CACHE", raising=False)
+    monkeypatch.delenv("UNITYSCAFFOLD_NO_REPLAY", raising=False)
+    monkeypatch.chdir(project)
+    planned: list[list[str]] = []
+    real = _app.run_cli
+    monkeypatch.setattr(_app, "run_cli", lambda args: planned.append(args) or real(args))
+    (project / "robot.yaml").write_text(HEADER + ENTRY)
+    assert scaffold(capsysbinary, "apply")[0] == 0
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 0
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 0
+    assert records(cache) and len(planned) == 2  # the clean check was recorded and replayed
+    parts = project / "ros/bot_description/urdf/parts.xacro"
+    parts.write_text(PARTS.replace('value="0.5"', 'value="0.25"'))
+    code, out, _ = scaffold(capsysbinary, "apply", "--check")
+    assert len(planned) == 3 and code == 1 and b"bot" in out, out
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        (
+            lambda p: p.replace('${radius}" length', '${radus}" length'),
+            f"{XACRO}: error: xacro: name 'radus' is not defined",
+        ),
+        (
+            lambda p: p.replace("urdf/parts.xacro", "urdf/part.xacro"),
+            f"{XACRO}: error: xacro: No such file or directory",
+        ),
+        (
+            lambda p: p.replace("$(find bot_description)", "$(find other)"),
+            "error: $(find other): package 'other' is not in this robot's `packages` "
+            "(listed: bot_description)",
+        ),
+        (
+            lambda p: p.replace("$(arg name)", "$(arg nam)"),
+            f"{XACRO}: error: xacro: Undefined substitution argument nam",
+        ),
+        (
+            lambda p: p.replace("$(arg name)", "$(env HOME)"),
+            "error: $(env ...) would make the URDF depend on this machine",
+        ),
+        (
+            lambda p: p.replace("</robot>", "</robt>"),
+            f"{XACRO}:21:3: error: not well-formed XML: mismatched tag",
+        ),
+        (
+            lambda p: p.replace('type="revolute"', 'type="spinning"'),
+            f"{XACRO} (expanded by xacro):",
+        ),
+    ],
+)
+def test_a_xacro_mistake_is_a_located_error_and_nothing_is_written(
+    project: Path, change, message: str
+) -> None:
+    xacro = project / XACRO
+    xacro.write_text(change(MAIN))
+    (project / "robot.yaml").write_text(HEADER + ENTRY)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2 and message in run.err, run.err
+    assert "Traceback" not in run.err and "hint:" in run.err
+    assert snapshot(project) == before
+
+
+def test_without_the_xacro_package_the_error_names_the_extra_to_install(
+    project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setitem(sys.modules, "xacro", None)  # what an import finds when it is missing
+    (project / "robot.yaml").write_text(HEADER + ENTRY)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.err
+    assert "robot.yaml:6:11: error:" in run.err and "the xacro package is not installed" in run.err
+    assert "pip install 'unityscaffold[xacro]'" in run.err
+    assert snapshot(project) == before
