@@ -100,6 +100,18 @@ def run_client(node, name, deadline, seen):
         }
 
 
+def wait_for_bridge(node, deadline):
+    """Until this node's participant sees rosbridge's node. rosbridge 2.x gives a new action
+    client one second to find its server (SendGoal's server_timeout_time) and then sends the goal
+    anyway; on a loaded machine DDS discovery of this process can take longer, and the goal is
+    lost without an answer. Once the two processes know each other, the action's own endpoints
+    match well within that second."""
+    while "rosbridge_websocket" not in node.get_node_names():
+        if time.monotonic() > deadline:
+            raise SystemExit("rosbridge_websocket never appeared in the ROS 2 graph")
+        time.sleep(0.05)
+
+
 def main(py_action, cs_action, result_path, timeout):
     deadline = time.monotonic() + float(timeout)
     seen = {
@@ -115,6 +127,7 @@ def main(py_action, cs_action, result_path, timeout):
     executor = MultiThreadedExecutor(num_threads=4)
     executor.add_node(node)
     threading.Thread(target=executor.spin, daemon=True).start()
+    wait_for_bridge(node, deadline)
     print("ready", flush=True)
     run_client(node, cs_action, deadline, seen)
     print("done", flush=True)
