@@ -15,17 +15,14 @@ import re
 from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
 
-import yaml
-
 from unityscaffold.errors import Diagnostic, SourceLocation
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
 from unityscaffold.unity._links import Links
 from unityscaffold.unity._split import Doc, is_reference_list
+from unityscaffold.unity._yamlcheck import yaml_problem
 
 __all__ = ["check_docs", "check_exemplar", "validate_docs"]
-
-_BaseLoader = getattr(yaml, "CBaseLoader", yaml.BaseLoader)
 
 
 class _Locator:
@@ -354,10 +351,4 @@ def _yaml_problem(body: str) -> tuple[str, tuple[int, int] | None] | None:
     """What keeps a document's body from being YAML, and where; None when it is. Kept for a
     few bodies: an import writes the same large one many times (ROS#'s cylinder collider
     Mesh, 124 KB, once per collider), whose documents differ only in their header."""
-    try:
-        yaml.load(body, Loader=_BaseLoader)
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        problem = getattr(exc, "problem", None) or str(exc).strip().split("\n")[0]
-        return problem, (mark.line, mark.column) if mark is not None else None
-    return None
+    return yaml_problem(body)
