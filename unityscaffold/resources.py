@@ -20,12 +20,14 @@ from functools import cache
 from importlib.abc import Traversable
 from importlib.resources import files
 from pathlib import Path
-
-import jinja2
-from jinja2.bccache import Bucket, FileSystemBytecodeCache
+from typing import TYPE_CHECKING
 
 from unityscaffold import __version__
 from unityscaffold.usercache import cache_root, template_cache_folder
+
+if TYPE_CHECKING:
+    import jinja2
+    from jinja2.bccache import BytecodeCache
 
 __all__ = [
     "rossharp_catalog_text",
@@ -39,17 +41,25 @@ _PACKAGE = "unityscaffold"
 _TEMPLATES = "templates"
 
 
-class _UserCache(FileSystemBytecodeCache):
-    """jinja's file cache, creating its folder on first use and never failing a command."""
+def _user_cache(folder: Path) -> BytecodeCache:
+    """jinja's file cache in ``folder``, creating it on first use and never failing a command.
 
-    def load_bytecode(self, bucket: Bucket) -> None:
-        with contextlib.suppress(OSError):  # an unreadable cache: compile
-            super().load_bytecode(bucket)
+    Defined here rather than at the top: jinja2 is imported only by the commands that render
+    a template (an apply that writes no script, such as a robot's, never loads it).
+    """
+    from jinja2.bccache import Bucket, FileSystemBytecodeCache
 
-    def dump_bytecode(self, bucket: Bucket) -> None:
-        with contextlib.suppress(OSError):  # no cache this time: the next command compiles
-            os.makedirs(self.directory, exist_ok=True)
-            super().dump_bytecode(bucket)
+    class UserCache(FileSystemBytecodeCache):
+        def load_bytecode(self, bucket: Bucket) -> None:
+            with contextlib.suppress(OSError):  # an unreadable cache: compile
+                super().load_bytecode(bucket)
+
+        def dump_bytecode(self, bucket: Bucket) -> None:
+            with contextlib.suppress(OSError):  # no cache this time: the next command compiles
+                os.makedirs(self.directory, exist_ok=True)
+                super().dump_bytecode(bucket)
+
+    return UserCache(str(folder), "%s.jinja-cache")
 
 
 def _cache_folder() -> Path | None:
@@ -63,10 +73,12 @@ def template_environment() -> jinja2.Environment:
 
     Templates see only what ``render`` passes them (their view), no jinja globals.
     """
+    import jinja2
+
     folder = _cache_folder()
     environment = jinja2.Environment(
         loader=jinja2.PackageLoader(_PACKAGE, _TEMPLATES),
-        bytecode_cache=_UserCache(str(folder), "%s.jinja-cache") if folder else None,
+        bytecode_cache=_user_cache(folder) if folder else None,
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,
         trim_blocks=True,

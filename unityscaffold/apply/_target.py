@@ -6,12 +6,11 @@ else in apply is the same for both."""
 from __future__ import annotations
 
 from collections.abc import Sequence
+from functools import cache
 from pathlib import Path
 from typing import Protocol
 
 from unityscaffold.apply._rossharp import RosSharp
-from unityscaffold.apply._target_rossharp import RosSharpTarget
-from unityscaffold.apply._target_tcp import TcpConnectorTarget
 from unityscaffold.codegen import GeneratedCode, Options
 from unityscaffold.codegen.scripts import Script
 from unityscaffold.interfaces.model import Interface
@@ -51,15 +50,18 @@ class RuntimeTarget(Protocol):
     def notes(self, project: Path, rossharp: RosSharp) -> tuple[str, ...]: ...
 
 
-_TARGETS: dict[Runtime, RuntimeTarget] = {
-    Runtime.ROS_SHARP: RosSharpTarget(),
-    Runtime.TCP_CONNECTOR: TcpConnectorTarget(),
-}
-
-
 def target_for(manifest: Manifest) -> RuntimeTarget:
-    return _TARGETS[manifest.runtime]
+    return target_of(manifest.runtime)
 
 
+@cache
 def target_of(runtime: Runtime) -> RuntimeTarget:
-    return _TARGETS[runtime]
+    """The runtime's target, its module imported on first use: a command loads the code
+    generator of its own runtime only (the other's modules are 5% of an apply's imports)."""
+    if runtime is Runtime.TCP_CONNECTOR:
+        from unityscaffold.apply._target_tcp import TcpConnectorTarget
+
+        return TcpConnectorTarget()
+    from unityscaffold.apply._target_rossharp import RosSharpTarget
+
+    return RosSharpTarget()
