@@ -138,17 +138,8 @@ def _constant(
     name: str,
     previous: ConstantView | None,
 ) -> ConstantView:
-    cs_type = primitive_type(constant.type, ctx.dialect)
     where = constant.location or _where(spec)
-    if cs_type is None:
-        raise LocatedError.at(
-            where,
-            f"constant '{constant.name}' has type {constant.type}, which C# constants cannot have",
-        )
-    try:
-        value = _literals.literal(constant.value, cs_type)
-    except ValueError as exc:
-        raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
+    cs_type, value = _literals.constant_value(constant, ctx.dialect, where)
     doc = doc_lines(constant.comment)
     spaced = previous is not None and bool(doc or previous.doc)  # a comment stands apart
     return ConstantView(name, cs_type, value, doc, spaced)

@@ -12,9 +12,11 @@ import re
 import struct
 from collections.abc import Sequence
 
-from unityscaffold.interfaces.model import Scalar
+from unityscaffold.codegen._types import primitive_type
+from unityscaffold.errors import LocatedError, SourceLocation
+from unityscaffold.interfaces.model import Constant, Dialect, Scalar
 
-__all__ = ["array_literal", "literal", "string_literal", "zero_literal"]
+__all__ = ["array_literal", "constant_value", "literal", "string_literal", "zero_literal"]
 
 _INT_RANGES = {
     "sbyte": (-(2**7), 2**7 - 1),
@@ -124,3 +126,18 @@ def array_literal(values: Sequence[Scalar], cs_type: str) -> str:
     if not values:
         return f"new {cs_type}[0]"
     return f"new {cs_type}[] {{ {', '.join(literal(v, cs_type) for v in values)} }}"
+
+
+def constant_value(constant: Constant, dialect: Dialect, where: SourceLocation) -> tuple[str, str]:
+    """The C# type and literal of ``constant``; a LocatedError at ``where`` for a constant C#
+    cannot declare or a value its type cannot hold."""
+    cs_type = primitive_type(constant.type, dialect)
+    if cs_type is None:
+        raise LocatedError.at(
+            where,
+            f"constant '{constant.name}' has type {constant.type}, which C# constants cannot have",
+        )
+    try:
+        return cs_type, literal(constant.value, cs_type)
+    except ValueError as exc:
+        raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None

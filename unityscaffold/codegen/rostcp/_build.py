@@ -149,17 +149,7 @@ def _field(ctx: MessageContext, spec: MessageSpec, field: Field, name: str) -> F
 def _constant(
     ctx: MessageContext, spec: MessageSpec, constant: Constant, name: str, spaced: bool
 ) -> ConstantView:
-    cs_type = primitive_type(constant.type, ctx.dialect)
-    where = _where(spec, constant)
-    if cs_type is None:
-        raise LocatedError.at(
-            where,
-            f"constant '{constant.name}' has type {constant.type}, which C# constants cannot have",
-        )
-    try:
-        value = _literals.literal(constant.value, cs_type)
-    except ValueError as exc:
-        raise LocatedError.at(where, f"constant '{constant.name}': {exc}") from None
+    cs_type, value = _literals.constant_value(constant, ctx.dialect, _where(spec, constant))
     doc = doc_lines(constant.comment)
     return ConstantView(name, cs_type, value, doc, spaced and bool(doc))
 
