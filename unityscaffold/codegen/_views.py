@@ -16,6 +16,7 @@ __all__ = [
     "ConstantView",
     "FileHeader",
     "MemberView",
+    "MessageClassView",
     "MessageView",
     "SizeCheck",
     "View",
@@ -104,18 +105,25 @@ class MemberView:
 
 
 @dataclass(frozen=True, slots=True)
-class MessageView:
+class MessageClassView:
+    """What a message class shows whichever runtime it is for: its name, its ROS name (a C#
+    literal), its doc lines, its constants and its constructor's parameter list."""
+
+    class_name: str
+    ros_name: str
+    doc: tuple[str, ...]
+    constants: tuple[ConstantView, ...]
+    parameters: str
+
+
+@dataclass(frozen=True, slots=True)
+class MessageView(MessageClassView):
     """A class deriving from ROS#'s ``Message``: messages and service halves."""
 
     template: ClassVar[str] = "rossharp/Message.cs.jinja"
     header: FileHeader
-    class_name: str
     base: str
-    ros_name: str
-    doc: tuple[str, ...]
-    constants: tuple[ConstantView, ...]
     members: tuple[MemberView, ...]
-    parameters: str
 
 
 @dataclass(frozen=True, slots=True)

@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from unityscaffold.codegen._views import ConstantView
+from unityscaffold.codegen._views import MessageClassView
 
 __all__ = ["ActionView", "FieldView", "Header", "MessageView", "WrapperView"]
 
@@ -43,18 +43,13 @@ class FieldView:
 
 
 @dataclass(frozen=True, slots=True)
-class MessageView:
+class MessageView(MessageClassView):
     """A message, service half or action part: public fields, as the connector generates."""
 
     template: ClassVar[str] = "rostcp/Message.cs.jinja"
     header: Header
-    class_name: str
-    ros_name: str
     register: str
-    doc: tuple[str, ...]
-    constants: tuple[ConstantView, ...]
     fields: tuple[FieldView, ...]
-    parameters: str
     #: ROS 2 only, for a message without fields: CDR writes one zero byte for it.
     placeholder_byte: bool
     runtime: str = RUNTIME
