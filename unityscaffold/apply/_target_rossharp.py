@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
+from unityscaffold.apply._action_view import action_script
 from unityscaffold.apply._rossharp import RESERVED_NAMES, RosSharp
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.codegen.scripts import (
@@ -93,21 +94,9 @@ class RosSharpTarget:
                 queue=item.queue or 1,
             )
         if isinstance(item, Action):
-            classes = messages.classes[f"{spec.package}/action/{spec.name}"]
             action = ActionClientScript if item.role is Role.CLIENT else ActionServerScript
-            return action(
-                class_name=item.class_name,
-                ros_type=f"{spec.package}/action/{spec.name}",
-                manifest=manifest.path.name,
-                action=item.name,
-                ros2=manifest.ros is Dialect.ROS2,
-                goal_type=classes[ClassRole.GOAL].qualified,
-                result_type=classes[ClassRole.RESULT].qualified,
-                feedback_type=classes[ClassRole.FEEDBACK].qualified,
-                action_goal_type=classes[ClassRole.ACTION_GOAL].qualified,
-                action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
-                action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
-            )
+            ros2 = manifest.ros is Dialect.ROS2
+            return action_script(action, manifest, item, spec, messages, ros2=ros2)
         classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
         kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
         return kind(

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from unityscaffold.apply import _tcpconnector as package
+from unityscaffold.apply._action_view import action_script
 from unityscaffold.apply._rossharp import RESERVED_NAMES as ROSSHARP_NAMES
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, rostcp
@@ -82,20 +83,8 @@ class TcpConnectorTarget:
                 message_type=message,
             )
         if isinstance(item, Action):
-            classes = messages.classes[f"{spec.package}/action/{spec.name}"]
             action = TcpActionClientScript if item.role is Role.CLIENT else TcpActionServerScript
-            return action(
-                class_name=item.class_name,
-                ros_type=f"{spec.package}/action/{spec.name}",
-                manifest=manifest.path.name,
-                action=item.name,
-                goal_type=classes[ClassRole.GOAL].qualified,
-                result_type=classes[ClassRole.RESULT].qualified,
-                feedback_type=classes[ClassRole.FEEDBACK].qualified,
-                action_goal_type=classes[ClassRole.ACTION_GOAL].qualified,
-                action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
-                action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
-            )
+            return action_script(action, manifest, item, spec, messages)
         assert isinstance(spec, ServiceSpec)
         classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
         client = item.role is Role.CLIENT

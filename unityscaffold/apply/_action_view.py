@@ -1,0 +1,38 @@
+"""The view of an action's script, shared by both runtimes: its names and its six classes."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from unityscaffold.codegen import ClassRole, GeneratedCode
+from unityscaffold.codegen.scripts import Script
+from unityscaffold.interfaces.model import Interface
+from unityscaffold.manifest.model import Action, Manifest
+
+__all__ = ["action_script"]
+
+
+def action_script(
+    kind: Callable[..., Script],
+    manifest: Manifest,
+    item: Action,
+    spec: Interface,
+    messages: GeneratedCode,
+    **extra: object,
+) -> Script:
+    """``kind``'s view of ``item`` (``extra`` for what only one runtime's scripts take)."""
+    ros_type = f"{spec.package}/action/{spec.name}"
+    classes = messages.classes[ros_type]
+    return kind(
+        class_name=item.class_name,
+        ros_type=ros_type,
+        manifest=manifest.path.name,
+        action=item.name,
+        goal_type=classes[ClassRole.GOAL].qualified,
+        result_type=classes[ClassRole.RESULT].qualified,
+        feedback_type=classes[ClassRole.FEEDBACK].qualified,
+        action_goal_type=classes[ClassRole.ACTION_GOAL].qualified,
+        action_result_type=classes[ClassRole.ACTION_RESULT].qualified,
+        action_feedback_type=classes[ClassRole.ACTION_FEEDBACK].qualified,
+        **extra,
+    )
