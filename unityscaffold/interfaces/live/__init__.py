@@ -15,6 +15,7 @@ from pathlib import Path
 from unityscaffold.errors import UserError
 from unityscaffold.interfaces.live._actions import group_actions
 from unityscaffold.interfaces.live._installed import local_types, with_installed_files
+from unityscaffold.interfaces.live._optional import optional_extra
 from unityscaffold.interfaces.live.model import (
     Direction,
     DiscoveredAction,
@@ -114,14 +115,11 @@ def _discover_graph(
 
 def _discover_bag(bag: Path, names: NameFilter) -> Discovery:
     """The bag reader; it needs ``rosbags``, an optional extra, so it is imported only here."""
-    try:
+    with optional_extra(
+        ("rosbags",),
+        "reading a recording needs the Python package rosbags, which is not installed",
+        hint="install unityscaffold with its `bag` extra: "
+        "python3 -m pip install 'unityscaffold[bag]' (from a checkout: '.[bag]')",
+    ):
         from unityscaffold.interfaces.live import _bag
-    except ModuleNotFoundError as exc:
-        if exc.name is None or exc.name.split(".")[0] != "rosbags":
-            raise
-        raise UserError(
-            "reading a recording needs the Python package rosbags, which is not installed",
-            hint="install unityscaffold with its `bag` extra: "
-            "python3 -m pip install 'unityscaffold[bag]' (from a checkout: '.[bag]')",
-        ) from None
     return _bag.discover_bag(bag, names=names)

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from unityscaffold.errors import UserError
+from unityscaffold.interfaces.live._optional import optional_extra
 
 __all__ = ["Endpoint", "Graph", "GraphSnapshot", "TypeReply", "ros2_graph"]
 
@@ -58,17 +59,14 @@ class GraphSnapshot:
 
 
 def _import_rclpy() -> Any:
-    try:
+    with optional_extra(
+        ("rclpy", "rpyutils"),
+        "reading the ROS 2 graph needs rclpy, which is not installed",
+        hint="install unityscaffold with its `ros2` extra (PyPI's ROS 2 Jazzy wheels, for "
+        "CPython 3.11 on Linux x86-64): python3 -m pip install 'unityscaffold[ros2]' (from a "
+        "checkout: '.[ros2]'); or discover through a rosbridge with --rosbridge URL",
+    ):
         return importlib.import_module("rclpy")
-    except ModuleNotFoundError as exc:
-        if exc.name is None or exc.name.split(".")[0] not in ("rclpy", "rpyutils"):
-            raise
-        raise UserError(
-            "reading the ROS 2 graph needs rclpy, which is not installed",
-            hint="install unityscaffold with its `ros2` extra (PyPI's ROS 2 Jazzy wheels, for "
-            "CPython 3.11 on Linux x86-64): python3 -m pip install 'unityscaffold[ros2]' (from a "
-            "checkout: '.[ros2]'); or discover through a rosbridge with --rosbridge URL",
-        ) from None
 
 
 class Graph:
