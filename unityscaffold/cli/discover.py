@@ -41,71 +41,81 @@ def register(app: typer.Typer) -> None:
     app.command("discover", help=_HELP)(discover_command)
 
 
+_MANIFEST: Path | None = typer.Argument(
+    None, metavar="[MANIFEST]", help="The manifest to add to.", show_default=False
+)
+_MASTER: str | None = typer.Option(
+    None, "--master", metavar="URL", help="A ROS 1 master, e.g. http://localhost:11311."
+)
+_ROSBRIDGE: str | None = typer.Option(
+    None, "--rosbridge", metavar="URL", help="A rosbridge (ROS 1 or 2), e.g. ws://localhost:9090."
+)
+_BAG: Path | None = typer.Option(
+    None, "--bag", metavar="FILE", help="A ROS 1 .bag, a ROS 2 .db3/.mcap file or bag folder."
+)
+_ROS2: bool = typer.Option(
+    False, "--ros2", help="The ROS 2 graph this machine sees, through rclpy (no rosbridge)."
+)
+_SELECT: str | None = typer.Option(
+    None, "--select", metavar="REGEX", help="Only names this regular expression matches."
+)
+_EXCLUDE: str | None = typer.Option(
+    None, "--exclude", metavar="REGEX", help="Leave out names this regular expression matches."
+)
+_ALL: bool = typer.Option(
+    False,
+    "--all",
+    help="Include ROS plumbing (/rosout, /rosapi/*, rosbridge's /client_count, logger and "
+    "parameter services, ROS 2 hidden names).",
+)
+_CACHE: Path | None = typer.Option(
+    None,
+    "--cache",
+    metavar="DIR",
+    help="Definitions cache folder (default: ros_definitions next to the manifest).",
+)
+_PRINT: bool = typer.Option(
+    False, "--print", help="Print a manifest fragment instead of editing the manifest."
+)
+_DRY_RUN: bool = typer.Option(False, "--dry-run", help="Discover and verify; write nothing.")
+_JSON: bool = typer.Option(False, "--json", help="Print the result as one JSON document.")
+_TIMEOUT: float = typer.Option(
+    2.0, "--timeout", min=0.05, metavar="SECONDS", help="Time limit of each network step."
+)
+_WAIT: float = typer.Option(
+    5.0,
+    "--wait",
+    min=0.1,
+    metavar="SECONDS",
+    help="--ros2: the longest wait for the graph to settle (it stops early once it does).",
+)
+_PROGRESS: bool = typer.Option(
+    False, "--progress", help="Show progress on stderr even when it is not a terminal."
+)
+
+
 def discover_command(
-    given: Path | None = typer.Argument(
-        None, metavar="[MANIFEST]", help="The manifest to add to.", show_default=False
-    ),
-    master: str | None = typer.Option(
-        None, "--master", metavar="URL", help="A ROS 1 master, e.g. http://localhost:11311."
-    ),
-    rosbridge: str | None = typer.Option(
-        None,
-        "--rosbridge",
-        metavar="URL",
-        help="A rosbridge (ROS 1 or 2), e.g. ws://localhost:9090.",
-    ),
-    bag: Path | None = typer.Option(
-        None, "--bag", metavar="FILE", help="A ROS 1 .bag, a ROS 2 .db3/.mcap file or bag folder."
-    ),
-    ros2: bool = typer.Option(
-        False, "--ros2", help="The ROS 2 graph this machine sees, through rclpy (no rosbridge)."
-    ),
-    select: str | None = typer.Option(
-        None, "--select", metavar="REGEX", help="Only names this regular expression matches."
-    ),
-    exclude: str | None = typer.Option(
-        None, "--exclude", metavar="REGEX", help="Leave out names this regular expression matches."
-    ),
-    everything: bool = typer.Option(
-        False,
-        "--all",
-        help="Include ROS plumbing (/rosout, /rosapi/*, rosbridge's /client_count, logger and "
-        "parameter services, ROS 2 hidden names).",
-    ),
-    cache: Path | None = typer.Option(
-        None,
-        "--cache",
-        metavar="DIR",
-        help="Definitions cache folder (default: ros_definitions next to the manifest).",
-    ),
-    print_fragment: bool = typer.Option(
-        False, "--print", help="Print a manifest fragment instead of editing the manifest."
-    ),
-    dry_run: bool = typer.Option(False, "--dry-run", help="Discover and verify; write nothing."),
-    as_json: bool = typer.Option(False, "--json", help="Print the result as one JSON document."),
-    timeout: float = typer.Option(
-        2.0, "--timeout", min=0.05, metavar="SECONDS", help="Time limit of each network step."
-    ),
-    wait: float = typer.Option(
-        5.0,
-        "--wait",
-        min=0.1,
-        metavar="SECONDS",
-        help="--ros2: the longest wait for the graph to settle (it stops early once it does).",
-    ),
-    progress: bool = typer.Option(
-        False, "--progress", help="Show progress on stderr even when it is not a terminal."
-    ),
+    given: Path | None = _MANIFEST,
+    master: str | None = _MASTER,
+    rosbridge: str | None = _ROSBRIDGE,
+    bag: Path | None = _BAG,
+    ros2: bool = _ROS2,
+    select: str | None = _SELECT,
+    exclude: str | None = _EXCLUDE,
+    everything: bool = _ALL,
+    cache: Path | None = _CACHE,
+    print_fragment: bool = _PRINT,
+    dry_run: bool = _DRY_RUN,
+    as_json: bool = _JSON,
+    timeout: float = _TIMEOUT,
+    wait: float = _WAIT,
+    progress: bool = _PROGRESS,
 ) -> None:
-    if sum(s is not None for s in (master, rosbridge, bag)) + ros2 != 1:
-        raise UserError(
-            "give exactly one source: --master URL, --rosbridge URL, --ros2 or --bag FILE"
-        )
+    _require_one_source(master, rosbridge, bag, ros2)
     manifest = find_manifest(given)
     text = _manifest_text(manifest, required=not print_fragment)
     cache = cache if cache is not None else manifest.parent / "ros_definitions"
-    base = manifest.parent
-    folders = edit.interface_folders(text or "", base)
+    folders = edit.interface_folders(text or "", manifest.parent)
     found = live.discover(
         master_url=master,
         rosbridge_url=rosbridge,
@@ -118,12 +128,7 @@ def discover_command(
         progress=_progress_printer(progress),
         search_paths=folders,
     )
-    entry = Path(os.path.relpath(cache, manifest.parent)).as_posix()
-    if print_fragment:
-        changes = edit.ManifestEdit(edit.manifest_fragment(found, cache_entry=entry))
-    else:
-        assert text is not None
-        changes = edit.edit_manifest(text, found, cache_entry=entry, path=str(manifest))
+    changes = _manifest_changes(found, manifest, None if print_fragment else text, cache)
     staged = stage_definitions(found, cache, search_paths=folders)
     _finish(staged, manifest, changes, dry_run=dry_run, write_manifest=not print_fragment)
     _report(
@@ -135,6 +140,25 @@ def discover_command(
         as_json=as_json,
         dry_run=dry_run,
     )
+
+
+def _require_one_source(
+    master: str | None, rosbridge: str | None, bag: Path | None, ros2: bool
+) -> None:
+    if sum(s is not None for s in (master, rosbridge, bag)) + ros2 != 1:
+        raise UserError(
+            "give exactly one source: --master URL, --rosbridge URL, --ros2 or --bag FILE"
+        )
+
+
+def _manifest_changes(
+    found: live.Discovery, manifest: Path, text: str | None, cache: Path
+) -> edit.ManifestEdit:
+    """``text`` (the manifest's) with what was found added; for None (``--print``), a fragment."""
+    entry = Path(os.path.relpath(cache, manifest.parent)).as_posix()
+    if text is None:
+        return edit.ManifestEdit(edit.manifest_fragment(found, cache_entry=entry))
+    return edit.edit_manifest(text, found, cache_entry=entry, path=str(manifest))
 
 
 def _manifest_text(manifest: Path, *, required: bool) -> str | None:
