@@ -10,6 +10,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from unityscaffold.apply._class_notes import class_notes
 from unityscaffold.apply._code import CodePlan, plan_code
 from unityscaffold.apply._identity import follow_in_manifest, followed_notes
 from unityscaffold.apply._inside import check_inside
@@ -171,9 +172,6 @@ def make_plan(
     beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
     deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside)
     target_notes = target_for(manifest).notes(project, rossharp)
-    notes = [*target_notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
-    notes += [s.warning for s in code.messages.skipped if s.warning]
-    notes += rosbridge2_notes(manifest, registry)
     new_lock = LockFile(
         files={
             **pruning.kept_files,
@@ -198,6 +196,9 @@ def make_plan(
     desired += _followed_manifest(manifest, scenes)
     desired.append(DesiredFile(lock_path(manifest.path), new_lock.render().encode("utf-8")))
     changes = plan_files(desired)
+    notes = [*target_notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
+    notes += class_notes(code, registry, {c.path for c in changes if c.writes})
+    notes += rosbridge2_notes(manifest, registry)
     return Plan(
         manifest,
         changes,

@@ -60,6 +60,9 @@ class SkippedClass:
     #: Set when the class ROS# ships has other fields than this definition: messages would
     #: lose or lack fields on the wire. Says how to generate ours instead.
     warning: str | None = None
+    #: The message whose shipped class differs only in the values a new instance starts with
+    #: (the warning's whole finding): that matters only where Unity constructs one to send.
+    default_of: str | None = None
 
 
 @dataclass(frozen=True, slots=True)

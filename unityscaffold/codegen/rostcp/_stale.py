@@ -47,10 +47,14 @@ def _holds(spec: MessageSpec, specs: dict[str, MessageSpec], stale: set[str]) ->
     return None
 
 
-def stale_warnings(items: list[TcpClass], dialect: Dialect, ids: Identities) -> dict[str, str]:
+def stale_warnings(
+    items: list[TcpClass], dialect: Dialect, ids: Identities
+) -> tuple[dict[str, str], dict[str, str]]:
     """Class full name -> warning, for each shipped class that differs or holds one that does
-    (wire differences only: a different default does not spread)."""
+    (wire differences only: a different default does not spread); and class full name ->
+    message full name for the warnings about defaults alone."""
     warnings: dict[str, str] = {}
+    defaults: dict[str, str] = {}
     stale: set[str] = set()
     for item in items:
         if item.shipped is None or item.spec is None:
@@ -58,7 +62,9 @@ def stale_warnings(items: list[TcpClass], dialect: Dialect, ids: Identities) -> 
         found = difference(item.shipped, item.spec, dialect)
         if found is None:
             continue
-        if not found.startswith("starts with"):
+        if found.startswith("starts with"):
+            defaults[item.cs_class.full_name] = item.spec.full_name
+        else:
             stale.add(item.spec.full_name)
         warnings[item.cs_class.full_name] = (
             f"ROS-TCP-Connector's {item.cs_class.full_name} does not match "
@@ -76,8 +82,9 @@ def stale_warnings(items: list[TcpClass], dialect: Dialect, ids: Identities) -> 
                 f"does not match its definition here: messages of {item.spec.full_name} are "
                 f"garbled between Unity and ROS; {_WHAT_TO_DO}"
             )
-    warnings.update(_unregistered(items))
-    return warnings
+    unregistered = _unregistered(items)
+    warnings.update(unregistered)
+    return warnings, {k: v for k, v in defaults.items() if k not in unregistered}
 
 
 def _unregistered(items: list[TcpClass]) -> dict[str, str]:

@@ -74,7 +74,7 @@ def generate(registry: Registry, roots: Iterable[Interface], options: Options) -
     roles: dict[str, dict[ClassRole, CsClass]] = {}
     for item in items:
         roles.setdefault(unit_key(item.interface), {})[item.role] = item.cs_class
-    warnings = stale_warnings(items, options.dialect, ids)
+    warnings, defaults = stale_warnings(items, options.dialect, ids)
     files, skipped = [], []
     for item in items:
         role_map = roles[unit_key(item.interface)]
@@ -84,10 +84,16 @@ def generate(registry: Registry, roots: Iterable[Interface], options: Options) -
             files.append(GeneratedFile(item.path, text, full_name, item.role, item.cs_class))
             continue
         reason = f"ROS-TCP-Connector ships {item.cs_class.full_name}"
-        warning = warnings.get(item.cs_class.full_name)
+        name = item.cs_class.full_name
         skipped.append(
             SkippedClass(
-                item.path, item.interface.full_name, item.role, item.cs_class, reason, warning
+                item.path,
+                item.interface.full_name,
+                item.role,
+                item.cs_class,
+                reason,
+                warnings.get(name),
+                defaults.get(name),
             )
         )
     return GeneratedCode(
