@@ -118,7 +118,8 @@ class MessageClassView:
 
 @dataclass(frozen=True, slots=True)
 class MessageView(MessageClassView):
-    """A class deriving from ROS#'s ``Message``: messages and service halves."""
+    """A class deriving from ROS#'s ``Message``: messages and service halves. ``base`` is that
+    class as the file names it; ``members`` are the auto-properties, one per field."""
 
     template: ClassVar[str] = "rossharp/Message.cs.jinja"
     header: FileHeader
