@@ -6,8 +6,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from unityscaffold.apply._action_view import action_script
 from unityscaffold.apply._rossharp import RESERVED_NAMES, RosSharp
+from unityscaffold.apply._script_views import action_script, script_names
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.codegen.scripts import (
     ActionClientScript,
@@ -75,11 +75,11 @@ class RosSharpTarget:
     def script_view(
         self, manifest: Manifest, item: Entry, spec: Interface, messages: GeneratedCode
     ) -> Script:
-        common = {
-            "class_name": item.class_name,
-            "ros_type": spec.full_name,
-            "manifest": manifest.path.name,
-        }
+        if isinstance(item, Action):
+            action = ActionClientScript if item.role is Role.CLIENT else ActionServerScript
+            ros2 = manifest.ros is Dialect.ROS2
+            return action_script(action, manifest, item, spec, messages, ros2=ros2)
+        common = script_names(manifest, item, spec)
         if isinstance(item, Topic):
             message = messages.message_class(spec.full_name).qualified
             if item.direction is Direction.PUBLISH:
@@ -93,10 +93,6 @@ class RosSharpTarget:
                 throttle=item.throttle or 0,
                 queue=item.queue or 1,
             )
-        if isinstance(item, Action):
-            action = ActionClientScript if item.role is Role.CLIENT else ActionServerScript
-            ros2 = manifest.ros is Dialect.ROS2
-            return action_script(action, manifest, item, spec, messages, ros2=ros2)
         classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
         kind = ServiceClientScript if item.role is Role.CLIENT else ServiceServerScript
         return kind(

@@ -7,9 +7,9 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from unityscaffold.apply import _tcpconnector as package
-from unityscaffold.apply._action_view import action_script
 from unityscaffold.apply._rossharp import RESERVED_NAMES as ROSSHARP_NAMES
 from unityscaffold.apply._rossharp import RosSharp
+from unityscaffold.apply._script_views import action_script, script_names
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, rostcp
 from unityscaffold.codegen.scripts import Script
 from unityscaffold.codegen.scripts_tcp import (
@@ -56,11 +56,10 @@ class TcpConnectorTarget:
     def script_view(
         self, manifest: Manifest, item: Entry, spec: Interface, messages: GeneratedCode
     ) -> Script:
-        common = {
-            "class_name": item.class_name,
-            "ros_type": spec.full_name,
-            "manifest": manifest.path.name,
-        }
+        if isinstance(item, Action):
+            action = TcpActionClientScript if item.role is Role.CLIENT else TcpActionServerScript
+            return action_script(action, manifest, item, spec, messages)
+        common = script_names(manifest, item, spec)
         ros2 = manifest.ros is Dialect.ROS2
         if isinstance(item, Topic):
             message = messages.message_class(spec.full_name).qualified
@@ -75,16 +74,7 @@ class TcpConnectorTarget:
                     latch=bool(item.latch),
                     empty_cdr=ros2 and not spec.fields,
                 )
-            return TcpSubscriberScript(
-                class_name=item.class_name,
-                ros_type=spec.full_name,
-                manifest=manifest.path.name,
-                topic=item.name,
-                message_type=message,
-            )
-        if isinstance(item, Action):
-            action = TcpActionClientScript if item.role is Role.CLIENT else TcpActionServerScript
-            return action_script(action, manifest, item, spec, messages)
+            return TcpSubscriberScript(**common, topic=item.name, message_type=message)
         assert isinstance(spec, ServiceSpec)
         classes = messages.classes[f"{spec.package}/srv/{spec.name}"]
         client = item.role is Role.CLIENT

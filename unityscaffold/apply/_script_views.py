@@ -1,15 +1,31 @@
-"""The view of an action's script, shared by both runtimes: its names and its six classes."""
+"""What both runtimes' script views share: an entry's names, and an action's six classes."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TypedDict
 
 from unityscaffold.codegen import ClassRole, GeneratedCode
 from unityscaffold.codegen.scripts import Script
 from unityscaffold.interfaces.model import Interface
-from unityscaffold.manifest.model import Action, Manifest
+from unityscaffold.manifest.model import Action, Manifest, Service, Topic
 
-__all__ = ["action_script"]
+__all__ = ["ScriptNames", "action_script", "script_names"]
+
+
+class ScriptNames(TypedDict):
+    """The names every topic's and service's script view takes (as keyword arguments)."""
+
+    class_name: str
+    ros_type: str
+    manifest: str
+
+
+def script_names(manifest: Manifest, item: Topic | Service, spec: Interface) -> ScriptNames:
+    """``item``'s class name, its ROS type and the manifest's file name."""
+    return ScriptNames(
+        class_name=item.class_name, ros_type=spec.full_name, manifest=manifest.path.name
+    )
 
 
 def action_script(
