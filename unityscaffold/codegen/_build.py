@@ -20,7 +20,7 @@ from unityscaffold.codegen.naming import CsClass, escape_identifier
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.interfaces.model import ArrayKind, Constant, Dialect, Field, MessageSpec, TypeRef
 
-__all__ = ["INLINE_ELEMENTS", "FileContext", "build_message"]
+__all__ = ["INLINE_ELEMENTS", "FileContext", "build_message", "initial_value"]
 
 INLINE_ELEMENTS = 64
 """A fixed array of messages or strings up to this size is initialised element by element
@@ -60,8 +60,9 @@ def _element_class(
     return None
 
 
-def _initial(ref: TypeRef, element: str, primitive: str | None, default: object) -> str:
-    """The expression the default constructor assigns."""
+def initial_value(ref: TypeRef, element: str, primitive: str | None, default: object) -> str:
+    """The expression the default constructor assigns (both runtimes' classes): ``default``, or
+    a zero, an empty string, a new message, and for an array its elements or none."""
     if default is not None:
         assert primitive is not None
         if isinstance(default, tuple):
@@ -118,7 +119,7 @@ def _member(
     assert element is not None
     cs_type = element + ("[]" if ref.is_array else "")
     try:
-        init = _initial(ref, element, primitive, field.default)
+        init = initial_value(ref, element, primitive, field.default)
     except ValueError as exc:
         message = f"default value of '{field.name}': {exc}"
         raise LocatedError.at(_where(spec, field), message) from None

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from unityscaffold.codegen import _literals
-from unityscaffold.codegen._build import INLINE_ELEMENTS
+from unityscaffold.codegen._build import initial_value
 from unityscaffold.codegen._types import primitive_type
 from unityscaffold.codegen._views import ConstantView, doc_lines
 from unityscaffold.codegen.naming import CsClass, escape_identifier
@@ -71,30 +71,6 @@ def _count(field: Field) -> str:
     return "deserializer.ReadLength()"
 
 
-def _initial(field: Field, element: str, primitive: str | None) -> str:
-    ref = field.type
-    if field.default is not None:
-        assert primitive is not None
-        if isinstance(field.default, tuple):
-            return _literals.array_literal(field.default, primitive)
-        return _literals.literal(field.default, primitive)
-    if primitive is None:
-        single = f"new {element}()"
-    elif primitive == "string":
-        single = '""'
-    else:
-        single = _literals.zero_literal(primitive)
-    if not ref.is_array:
-        return single
-    if ref.array is ArrayKind.FIXED and ref.size:
-        if primitive not in (None, "string"):
-            return f"new {element}[{ref.size}]"
-        if ref.size <= INLINE_ELEMENTS:
-            return f"new {element}[] {{ {', '.join([single] * ref.size)} }}"
-        return f"global::System.Array.ConvertAll(new {element}[{ref.size}], _ => {single})"
-    return f"new {element}[0]"
-
-
 def _read(field: Field, name: str, element: str, primitive: str | None) -> str:
     target = f"this.{name}"
     if not field.type.is_array:
@@ -127,7 +103,7 @@ def _field(ctx: MessageContext, spec: MessageSpec, field: Field, name: str) -> F
     primitive = primitive_type(ref.base, ctx.dialect)
     element = primitive or ctx.class_of(ref.base, _where(spec, field)).qualified
     try:
-        init = _initial(field, element, primitive)
+        init = initial_value(field.type, element, primitive, field.default)
     except ValueError as exc:
         message = f"default value of '{field.name}': {exc}"
         raise LocatedError.at(_where(spec, field), message) from None
