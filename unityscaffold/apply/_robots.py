@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._lock import LockFile, LockRobot
+from unityscaffold.apply._robot_adopt import refuse_foreign_robot
 from unityscaffold.apply._robot_models import model_documents
 from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.errors import LocatedError, UserError, located_at
@@ -138,11 +139,13 @@ def _place(
 ) -> None:
     doc = editor.doc
     parent_path, _, _ = robot.gameobject.rpartition("/")
-    parent = 0
+    parent, holder = 0, None
     if parent_path:
         holder = editor.gameobject(parent_path, True, robot.entry.locations.of("gameobject"))
         parent = holder.transform_id or 0
     writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
+    root = writer.file_id(robot.imported.objects.key, "GameObject", 1)
+    refuse_foreign_robot(doc, robot, holder.file_id if holder else None, root, ctx.rossharp_names)
     objects = writer.objects(robot.imported.objects, parent)
     _remove(editor, robot.gameobject, set(before - writer.used))
     editor.plan.robots.append(
@@ -218,10 +221,12 @@ class _Writer:
         components = tuple(
             self._component(obj, component, role) for component, role in _roles(obj.components)
         )
+        # the root takes the name its entry's path gives it (the URDF's by default)
+        name = path.rpartition("/")[2] if obj.role is Role.ROBOT else obj.name
         return OwnedObject(
             self.ids[(obj.key, "GameObject")],
             self.ids[(obj.key, "Transform")],
-            obj.name,
+            name,
             path,
             parent,
             self._transform(obj),
