@@ -3,11 +3,15 @@ by hand in Unity's editor, or an object that is no robot at all."""
 
 from __future__ import annotations
 
+import json
+import re
+import shutil
 from pathlib import Path
 
 import pytest
-from helpers import build_tree, run_cli, snapshot
-from test_apply_robots import HEADER, SCENE, URDF
+import test_apply_robot_models as models
+from helpers import build_tree, require, run_cli, snapshot
+from test_apply_robots import HEADER, INERTIAL, SCENE, URDF
 
 from unityscaffold.unity.catalog import rossharp_catalog
 from unityscaffold.unity.scene import SceneDocument
@@ -26,19 +30,125 @@ def _by_hand(project: Path, path: str, class_name: str) -> None:
     assert run.code == 0, run.err
 
 
-def test_a_robot_imported_by_hand_is_refused_at_its_entry_and_nothing_is_written(
+def _hand_import(project: Path, body: str | None = "") -> None:
+    """The robot apply imports, as if imported by hand: every fileID apply gave it (and its
+    references) renumbered, as Unity's own are random, and no lock (``body``: what follows
+    the manifest's header; None: the manifest is there)."""
+    if body is not None:
+        (project / "robot.yaml").write_text(HEADER + body)
+    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    lock = json.loads((project / "robot.lock.json").read_text())
+    ids = lock["robots"][SCENE]["bot"]
+    _renumber(project / SCENE, {old: 1000 + 7 * n for n, old in enumerate(ids)})
+    (project / "robot.lock.json").unlink()
+
+
+def _renumber(path: Path, renumbered: dict[int, int]) -> None:
+    text = re.sub(
+        r"(&|fileID: )(\d+)\b",
+        lambda m: m[1] + str(renumbered.get(int(m[2]), m[2])),
+        path.read_text(),
+    )
+    path.write_text(text)
+
+
+def test_a_robot_imported_by_hand_is_adopted_with_its_fileids_and_nothing_changes(
     project: Path,
 ) -> None:
+    _hand_import(project)
+    scene = (project / SCENE).read_bytes()
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 0, run.err
+    assert "adopt robot bot, imported by hand (16 objects)" in run.out
+    assert [line for line in run.out.splitlines() if "(robot bot)" in line] == []
+    assert (project / SCENE).read_bytes() == scene
+    before = snapshot(project)
+    again = run_cli("apply", str(project / "robot.yaml"))
+    assert again.code == 0 and "wrote 0 files" in again.out, again.out
+    assert snapshot(project) == before
+    assert run_cli("apply", str(project / "robot.yaml"), "--check").code == 0
+
+
+def test_an_adopted_robot_follows_its_urdf_in_place_as_one_apply_imported(
+    project: Path,
+) -> None:
+    _hand_import(project)
+    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    ids = {go.path: go.file_id for _, go in SceneDocument.load(project / SCENE).tree()}
+    (project / "ros/bot.urdf").write_text(
+        URDF.replace('<mass value="1"/>', '<mass value="3"/>').replace(
+            "</robot>",
+            f'<link name="tool">{INERTIAL.format(mass=1)}</link>'
+            '<joint name="t" type="fixed"><parent link="arm"/><child link="tool"/></joint>'
+            "</robot>",
+        )
+    )
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 0, run.err
+    assert "update bot/base/arm (robot bot)" in run.out
+    assert "import robot bot (3 new objects)" in run.out  # the tool link
+    now = {go.path: go.file_id for _, go in SceneDocument.load(project / SCENE).tree()}
+    assert {path: now[path] for path in ids} == ids
+    before = snapshot(project)
+    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert snapshot(project) == before
+
+
+@pytest.mark.parametrize(
+    ("edit", "difference"),
+    [
+        (
+            ("  m_Name: arm\n", "  m_Name: forearm\n"),
+            "'bot/base' has no child 'arm' (the URDF's link[1]) in its place",
+        ),
+        (
+            ("  m_Name: Sphere\n", "  m_Name: Ball\n"),
+            "'bot/base/arm/Visuals/unnamed' has no child 'Sphere'",
+        ),
+    ],
+)
+def test_a_robot_imported_by_hand_that_is_not_the_urdfs_is_refused_at_its_first_difference(
+    project: Path, edit: tuple[str, str], difference: str
+) -> None:
+    _hand_import(project)
+    text = (project / SCENE).read_text()
+    assert edit[0] in text
+    (project / SCENE).write_text(text.replace(*edit, 1))
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert (
+        "robot.yaml:6:5: error: the robot imported by hand at 'bot' in Assets/Scenes/Main.unity "
+        f"is not the import of bot.urdf: {difference}" in run.err
+    )
+    assert "hint: apply takes over a robot imported in Unity's editor only when" in run.err
+    assert snapshot(project) == before
+
+
+def test_a_robot_imported_by_hand_missing_a_component_is_refused(project: Path) -> None:
+    _hand_import(project)
+    scene = SceneDocument.load(project / SCENE)
+    arm = scene.find_gameobject("bot/base/arm")
+    inertial = [c for c in scene.components_of(arm) if c.script is not None][1]
+    text = (project / SCENE).read_text()
+    text = text.replace(f"  - component: {{fileID: {inertial.file_id}}}\n", "")
+    document = text.index(f"--- !u!114 &{inertial.file_id}\n")
+    text = text[:document] + text[text.index("--- ", document + 4) :]
+    (project / SCENE).write_text(text)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert "'bot/base/arm' has no UrdfInertial after the Transform and UrdfLink, Rigidbody" in (
+        run.err
+    )
+
+
+def test_a_bare_object_with_urdfrobot_is_refused_as_not_the_import(project: Path) -> None:
     _by_hand(project, "bot", "UrdfRobot")
     (project / "robot.yaml").write_text(HEADER)
     before = snapshot(project)
     run = run_cli("apply", str(project / "robot.yaml"))
     assert run.code == 2, run.out + run.err
-    assert (
-        "robot.yaml:6:5: error: Assets/Scenes/Main.unity already has a GameObject 'bot' with a "
-        "UrdfRobot component, imported by hand (apply did not make it)" in run.err
-    )
-    assert "hint: apply does not take over a robot imported in Unity's editor" in run.err
+    assert "is not the import of bot.urdf: 'bot' has no child 'Plugins'" in run.err
     assert snapshot(project) == before
 
 
@@ -89,4 +199,51 @@ def test_the_robots_root_takes_the_name_its_gameobject_path_gives(project: Path)
     assert [go.name for go in scene.children(scene.find_gameobject("World"))] == ["Robot"]
     before = snapshot(project)
     assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert snapshot(project) == before
+
+
+def test_a_robot_with_stl_meshes_imported_by_hand_is_refused_at_its_prefab(
+    tmp_path: Path,
+) -> None:
+    """ROS#'s STL post-processor gives its prefab's objects random fileIDs, which the
+    instances in the scene name; apply's own prefab has others, so such a robot is not
+    taken over (the prefab, differing from apply's, is a file edited by hand first)."""
+    require((models.NIRYO / "G1_Rod.STL").is_file(), "the vendored niryo meshes")
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    project = build_tree(
+        tmp_path / "p", {"ros/bot.urdf": models.URDF, "robot.yaml": models.MANIFEST}
+    )
+    (project / "ros/desc/meshes").mkdir(parents=True)
+    shutil.copy(models.NIRYO / "G1_Rod.STL", project / "ros/desc/meshes")
+    for name in ("l_finger.dae", "l_finger_color.png"):
+        shutil.copy(models.FINGER / name, project / "ros/desc/meshes")
+    _hand_import(project, None)
+    prefab = project / "Assets/Urdf/bot/desc/meshes/G1_Rod.prefab"
+    ids = [int(i) for i in re.findall(r"^--- !u!\d+ &(\d+)", prefab.read_text(), re.M)]
+    renumbered = {old: 500 + n for n, old in enumerate(ids)}
+    _renumber(prefab, renumbered)
+    _renumber(project / SCENE, renumbered)
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code != 0 and "G1_Rod.prefab" in run.out + run.err
+    run = run_cli("apply", str(project / "robot.yaml"), "--force")
+    assert run.code == 2, run.out + run.err
+    assert (
+        "'bot/base/Visuals/unnamed/G1_Rod' is an instance of ROS#'s STL prefab "
+        "Assets/Urdf/bot/desc/meshes/G1_Rod.prefab, whose objects are not the ones of the "
+        "prefab apply writes (robots with STL meshes are not adopted yet)" in run.err
+    )
+    assert snapshot(project) == before
+
+
+def test_a_robot_imported_by_hand_beside_the_one_apply_imported_is_refused(project: Path) -> None:
+    (project / "robot.yaml").write_text(HEADER)
+    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    _by_hand(project, "Second", "UrdfRobot")
+    scene = project / SCENE
+    scene.write_text(scene.read_text().replace("  m_Name: Second\n", "  m_Name: bot\n"))
+    before = snapshot(project)
+    run = run_cli("apply", str(project / "robot.yaml"))
+    assert run.code == 2, run.out + run.err
+    assert "robot.yaml:6:5: error: Assets/Scenes/Main.unity has 2 GameObjects at 'bot'" in run.err
     assert snapshot(project) == before

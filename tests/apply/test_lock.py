@@ -61,6 +61,23 @@ def test_robots_are_listed_only_when_there_are_some_merged_and_read_back(tmp_pat
     assert LockFile.read(path).robots == (LockRobot("Assets/S.unity", "r2d2", (3, 4, 9)),)
 
 
+def test_adopted_robot_slots_are_listed_only_when_there_are_some_and_read_back(tmp_path):
+    path = tmp_path / "robot.lock.json"
+    made = LockRobot("Assets/S.unity", "r2d2", (3, 9))
+    assert '"adopted"' not in LockFile(robots=(made,)).render()
+    slots = (("link[0] GameObject", 9), ("robot GameObject", 3))
+    adopted = LockRobot("Assets/S.unity", "r2d2", (3, 9), slots)
+    path.write_text(LockFile(robots=(adopted,)).render())
+    assert '"adopted": {\n    "Assets/S.unity": {\n      "r2d2": {\n' in path.read_text()
+    read = LockFile.read(path)
+    assert read.robots == (adopted,)
+    assert read.robot_adopted("Assets/S.unity", "r2d2") == dict(slots)
+    # an interrupted apply's journal adds to them
+    journal = LockFile(robots=(LockRobot("Assets/S.unity", "r2d2", (4,), (("x Mesh", 4),)),))
+    recovered = read.recovered(journal, tmp_path)
+    assert recovered.robot_adopted("Assets/S.unity", "r2d2") == {**dict(slots), "x Mesh": 4}
+
+
 def test_a_missing_lock_is_empty(tmp_path):
     assert LockFile.read(tmp_path / "none.lock.json") == LockFile()
 
@@ -164,6 +181,15 @@ def _components(*items: str) -> str:
         (
             _lock(_components(), '"robots": {"S.unity": {}}'),
             f'robots has the key "S.unity", which is not {_INSIDE}',
+        ),
+        (
+            _lock(_components(), '"adopted": {"Assets/S.unity": {"r2d2": {"robot Transform": 0}}}'),
+            'adopted["Assets/S.unity"]["r2d2"]["robot Transform"] should be a fileID (a positive '
+            "64-bit integer), found the number 0",
+        ),
+        (
+            _lock(_components(), '"adopted": {"Assets/S.unity": {"r2d2": [1]}}'),
+            'adopted["Assets/S.unity"]["r2d2"] should be an object, found a list',
         ),
         (_lock(_components(), '"kept": {}'), "kept should be a list, found an object"),
         (_lock(_components(), '"kept": [3]'), "kept[0] should be a string, found the number 3"),

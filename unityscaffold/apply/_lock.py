@@ -89,11 +89,14 @@ class LockGameObject:
 @dataclass(frozen=True, slots=True, order=True)
 class LockRobot:
     """A robot apply imported: the fileIDs of every object it made for it in ``scene`` (so
-    what a changed URDF no longer has can be removed)."""
+    what a changed URDF no longer has can be removed), and those it took over from a robot
+    imported by hand, by the import's slot (``"link[1]/visual[0] UrdfVisual#0"``), as they
+    cannot be derived from the slot as the others are."""
 
     scene: str
     gameobject: str
     file_ids: tuple[int, ...]
+    adopted: tuple[tuple[str, int], ...] = ()
 
 
 class _Malformed(Exception):
@@ -201,6 +204,7 @@ def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
 
 def _robots(data: dict[str, object]) -> tuple[LockRobot, ...]:
     scenes = _object(data.get("robots", {}), "robots")
+    adopted = _adopted(data)
     found = []
     for scene, robots in scenes.items():
         shown = json.dumps(scene, ensure_ascii=False)
@@ -211,8 +215,22 @@ def _robots(data: dict[str, object]) -> tuple[LockRobot, ...]:
             if not isinstance(ids, list):
                 raise _wrong(where, "a list of fileIDs", ids)
             file_ids = tuple(_file_id(i, f"{where}[{n}]") for n, i in enumerate(ids))
-            found.append(LockRobot(scene, path, file_ids))
+            found.append(LockRobot(scene, path, file_ids, adopted.get((scene, path), ())))
     return tuple(found)
+
+
+def _adopted(data: dict[str, object]) -> dict[tuple[str, str], tuple[tuple[str, int], ...]]:
+    scenes = _object(data.get("adopted", {}), "adopted")
+    found = {}
+    for scene, robots in scenes.items():
+        shown = json.dumps(scene, ensure_ascii=False)
+        for path, slots in _object(robots, f"adopted[{shown}]").items():
+            where = f"adopted[{shown}][{json.dumps(path, ensure_ascii=False)}]"
+            found[(scene, path)] = tuple(
+                (slot, _file_id(i, f"{where}[{json.dumps(slot)}]"))
+                for slot, i in sorted(_object(slots, where).items())
+            )
+    return found
 
 
 def _kept(data: dict[str, object]) -> frozenset[str]:
@@ -258,6 +276,16 @@ class LockFile:
             if (r.scene, r.gameobject) == (scene, gameobject)
             for i in r.file_ids
         )
+
+    def robot_adopted(self, scene: str, gameobject: str) -> dict[str, int]:
+        """The fileIDs apply took over from the robot at ``gameobject`` imported by hand, by
+        slot (see ``LockRobot``)."""
+        return {
+            slot: i
+            for r in self.robots
+            if (r.scene, r.gameobject) == (scene, gameobject)
+            for slot, i in r.adopted
+        }
 
     def gameobjects_in(self, scene: str) -> dict[str, int]:
         """Path -> fileID of the GameObjects recorded in ``scene``."""
@@ -325,6 +353,14 @@ class LockFile:
                     scene,
                     path,
                     tuple(sorted(self.robot_ids(scene, path) | journal.robot_ids(scene, path))),
+                    tuple(
+                        sorted(
+                            {
+                                **self.robot_adopted(scene, path),
+                                **journal.robot_adopted(scene, path),
+                            }.items()
+                        )
+                    ),
                 )
                 for scene, path in sorted(
                     {(r.scene, r.gameobject) for r in (*self.robots, *journal.robots)}
@@ -356,6 +392,7 @@ class LockFile:
             # only when there are any: locks without kept files read as they did before
             **({"kept": sorted(self.kept)} if self.kept else {}),
             **({"robots": robots} if (robots := self._rendered_robots()) else {}),
+            **({"adopted": adopted} if (adopted := self._rendered_adopted()) else {}),
         }
         return json.dumps(data, indent=2, sort_keys=False, ensure_ascii=False) + "\n"
 
@@ -366,4 +403,13 @@ class LockFile:
             ids = sorted(self.robot_ids(scene, robot))
             if ids:
                 found.setdefault(scene, {})[robot] = ids
+        return found
+
+    def _rendered_adopted(self) -> dict[str, dict[str, dict[str, int]]]:
+        """Scene -> robot -> slot -> fileID, for robots taken over from a hand import."""
+        found: dict[str, dict[str, dict[str, int]]] = {}
+        for scene, robot in sorted({(r.scene, r.gameobject) for r in self.robots}):
+            slots = self.robot_adopted(scene, robot)
+            if slots:
+                found.setdefault(scene, {})[robot] = dict(sorted(slots.items()))
         return found

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._lock import LockFile, LockRobot
-from unityscaffold.apply._robot_adopt import refuse_foreign_robot
+from unityscaffold.apply._robot_adopt import adopt_existing, keep_unity_rounding
 from unityscaffold.apply._robot_models import model_documents
 from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.errors import LocatedError, UserError, located_at
@@ -67,7 +67,7 @@ def place_robots(
     here = [robot for robot in robots if robot.entry.scene == scene]
     for robot in here:
         with located_at(robot.entry.locations.item):
-            _place(ctx, editor, robot, lock.robot_ids(scene, robot.gameobject))
+            _place(ctx, editor, robot, lock)
     placed = {robot.gameobject for robot in here}
     for old in lock.robots:
         if old.scene == scene and old.gameobject not in placed:
@@ -134,29 +134,56 @@ def _is_gameobject(editor: SceneEditor, file_id: int) -> bool:
     return found is not None and found.class_id == 1
 
 
-def _place(
-    ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, before: frozenset[int]
-) -> None:
-    doc = editor.doc
+def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: LockFile) -> None:
+    doc, scene = editor.doc, editor.plan.relative
     parent_path, _, _ = robot.gameobject.rpartition("/")
     parent, holder = 0, None
     if parent_path:
         holder = editor.gameobject(parent_path, True, robot.entry.locations.of("gameobject"))
         parent = holder.transform_id or 0
-    writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
-    root = writer.file_id(robot.imported.objects.key, "GameObject", 1)
-    refuse_foreign_robot(doc, robot, holder.file_id if holder else None, root, ctx.rossharp_names)
+    writer = _writer(ctx, editor, robot, lock, holder.file_id if holder else None)
     objects = writer.objects(robot.imported.objects, parent)
+    before = lock.robot_ids(scene, robot.gameobject)
     _remove(editor, robot.gameobject, set(before - writer.used))
-    editor.plan.robots.append(
-        LockRobot(editor.plan.relative, robot.gameobject, tuple(sorted(writer.used)))
-    )
-    said = doc.sync_owned(objects, writer.documents)
+    taken = tuple(sorted((f"{k} {r}", i) for (k, r), i in writer.taken.items() if i in writer.used))
+    editor.plan.robots.append(LockRobot(scene, robot.gameobject, tuple(sorted(writer.used)), taken))
+    said = doc.sync_owned(keep_unity_rounding(doc, objects), writer.documents)
     if any(line.startswith("create ") for line in said) and len(said) > 3:
         made = sum(line.startswith("create ") for line in said)
         editor.plan.edits.append(f"import robot {robot.gameobject} ({made} new objects)")
         said = [line for line in said if not line.startswith("create ")]
     editor.plan.edits += [f"{line} (robot {robot.gameobject})" for line in said]
+
+
+def _writer(
+    ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: LockFile, holder: int | None
+) -> _Writer:
+    """The robot's writer, with the fileIDs of a robot imported by hand taken over: those an
+    earlier apply took (per the lock, where the scene still has them), or those of one at the
+    robot's path now (``_robot_adopt``, which refuses whatever else is there)."""
+    doc = editor.doc
+    writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
+    earlier = lock.robot_adopted(editor.plan.relative, robot.gameobject)
+    writer.take({_slot(s): i for s, i in earlier.items() if doc.document(i) is not None})
+    root = writer.file_id(robot.imported.objects.key, "GameObject", 1)
+    found = adopt_existing(doc, robot, holder, root, ctx.rossharp_names, _slot_roles)
+    if not found:
+        return writer
+    count = sum(role == "GameObject" for _, role in found)
+    editor.plan.edits.append(f"adopt robot {robot.gameobject}, imported by hand ({count} objects)")
+    writer = _Writer(ctx, robot, writer.class_of)
+    writer.take(found)
+    return writer
+
+
+def _slot(text: str) -> tuple[str, str]:
+    """A slot as the lock writes it (``"link[1]/visual[0] UrdfVisual#0"``)."""
+    key, _, role = text.partition(" ")
+    return key, role
+
+
+def _slot_roles(obj: ImportedObject) -> list[tuple[str, str]]:
+    return [(component.name, role) for component, role in _roles(obj.components)]
 
 
 def _class_of(doc: SceneDocument, file_id: int) -> int | None:
@@ -174,6 +201,13 @@ class _Writer:
     used: set[int] = field(default_factory=set)
     ids: dict[tuple[str, str], int] = field(default_factory=dict)
     documents: list[OwnedDocument] = field(default_factory=list)
+    taken: dict[tuple[str, str], int] = field(default_factory=dict)
+
+    def take(self, slots: Mapping[tuple[str, str], int]) -> None:
+        """Slots whose fileIDs come from a robot imported by hand (see ``_robot_adopt``)."""
+        self.taken.update(slots)
+        self.ids.update(slots)
+        self.used.update(slots.values())
 
     def file_id(self, key: str, role: str, class_id: int) -> int:
         slot = (key, role)
