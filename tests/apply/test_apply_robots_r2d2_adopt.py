@@ -79,3 +79,24 @@ def test_a_hand_imported_robot_whose_assets_are_elsewhere_is_refused(project: Pa
         "Assets/Urdf/r2d2/urdf_tutorial/meshes/l_finger.dae" in run.err
     )
     assert snapshot(project) == before
+
+
+def test_what_adopting_changes_is_listed_with_the_keys_that_keep_hand_edits(
+    project: Path,
+) -> None:
+    """Without the entry's pose and switches, the robot is put where its URDF and the entry
+    say: the root to [0, 0, 0] and the model colliders not convex, each listed."""
+    manifest = project / "robot.yaml"
+    text = manifest.read_text()
+    for line in ("position: [0, 0.47, 0]", "kinematic: true", "gravity: false", "convex: true"):
+        text = text.replace(f"    {line}\n", "")
+    manifest.write_text(text, encoding="utf-8")
+    run = run_cli("apply", str(manifest))
+    assert run.code == 0, run.err
+    changed = [line.strip() for line in run.out.splitlines() if "(robot r2d2)" in line]
+    assert "update r2d2 (robot r2d2)" in changed
+    assert sum(line.startswith("update --- !u!64 &") for line in changed) == 4
+    assert len(changed) == 5
+    assert "note: adopting robot r2d2 changes what differs from its URDF and entry" in run.out
+    again = run_cli("apply", str(manifest))
+    assert again.code == 0 and "note:" not in again.out and "wrote 0 files" in again.out

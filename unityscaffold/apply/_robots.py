@@ -153,6 +153,12 @@ def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: Lo
         editor.plan.edits.append(f"import robot {robot.gameobject} ({made} new objects)")
         said = [line for line in said if not line.startswith("create ")]
     editor.plan.edits += [f"{line} (robot {robot.gameobject})" for line in said]
+    if writer.adopting and said:
+        editor.plan.edits.append(
+            f"note: adopting robot {robot.gameobject} changes what differs from its URDF and "
+            "entry (above); the entry keeps hand edits of the root's pose and UrdfRobot's "
+            "switches with `position`, `rotation`, `kinematic`, `gravity` and `convex`"
+        )
 
 
 def _writer(
@@ -171,7 +177,7 @@ def _writer(
         return writer
     count = sum(role == "GameObject" for _, role in found)
     editor.plan.edits.append(f"adopt robot {robot.gameobject}, imported by hand ({count} objects)")
-    writer = _Writer(ctx, robot, writer.class_of)
+    writer = _Writer(ctx, robot, writer.class_of, adopting=True)
     writer.take(found)
     return writer
 
@@ -201,6 +207,7 @@ class _Writer:
     used: set[int] = field(default_factory=set)
     ids: dict[tuple[str, str], int] = field(default_factory=dict)
     documents: list[OwnedDocument] = field(default_factory=list)
+    adopting: bool = False  # this run takes over a robot imported by hand
     taken: dict[tuple[str, str], int] = field(default_factory=dict)
 
     def take(self, slots: Mapping[tuple[str, str], int]) -> None:
