@@ -249,25 +249,39 @@ def keep_unity_rounding(doc: SceneDocument, objects: list[OwnedObject]) -> list[
     planned ones, so that those keep the bytes Unity wrote."""
     kept = []
     for obj in objects:
-        if doc.document(obj.transform_id) is None:
+        found = doc.document(obj.transform_id)
+        if found is None:
             kept.append(obj)
             continue
         fields = tuple(
             (name, value)
             for name, value in obj.transform
-            if not (name in _POSE and _near(doc.field(obj.transform_id, name), value))
+            if not (name in _POSE and _near(_vector(found.text, name), value))
         )
         kept.append(obj if fields == obj.transform else replace(obj, transform=fields))
     return kept
 
 
-def _near(scene: object, planned: FieldValue) -> bool:
-    if not isinstance(scene, dict) or not isinstance(planned, InlineMap):
+def _vector(text: str, name: str) -> dict[str, str] | None:
+    """A one-line flow mapping field of a document (``{x: 0, y: 1, z: 0}``), read without a
+    YAML parse: every robot object's pose is read on every run, a no-op included."""
+    at = text.find(f"\n  {name}: {{")
+    if at < 0:
+        return None
+    line = text[at + len(name) + 6 : text.find("\n", at + 1)]
+    if not line.endswith("}"):
+        return None
+    pairs = [item.partition(": ") for item in line[:-1].split(", ")]
+    return {key: value for key, _, value in pairs}
+
+
+def _near(scene: dict[str, str] | None, planned: FieldValue) -> bool:
+    if scene is None or not isinstance(planned, InlineMap):
         return False
     wanted = dict(planned.items)
     if set(scene) != set(wanted):
         return False
     try:
         return all(abs(float(scene[k]) - float(wanted[k])) <= _NEAR for k in wanted)  # type: ignore[arg-type]
-    except (TypeError, ValueError):
+    except ValueError:
         return False
