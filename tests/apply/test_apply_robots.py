@@ -170,13 +170,67 @@ def test_what_the_user_adds_to_a_link_is_kept(project: Path) -> None:
     assert snapshot(project) == before
 
 
-def test_a_prismatic_joint_is_refused_at_its_joint(project: Path) -> None:
-    build_tree(project, {"ros/bot.urdf": URDF.replace('type="revolute"', 'type="prismatic"')})
+PRISMATIC = URDF.replace('type="revolute"', 'type="prismatic"').replace(
+    'lower="-1" upper="1"/>', 'lower="-0.05" upper="0.3"/><dynamics damping="0.7" friction="0.2"/>'
+)
+
+
+def test_a_prismatic_joint_gets_rossharps_configurable_joint_and_limits_manager(
+    project: Path,
+) -> None:
+    build_tree(project, {"ros/bot.urdf": PRISMATIC})
+    run = _apply(project)
+    assert run.code == 0, run.err
+    tree = run_cli("scene", "ls", str(project / SCENE)).out
+    assert (
+        "arm  [Transform, UrdfLink, Rigidbody, UrdfInertial, UrdfJointPrismatic, "
+        "ConfigurableJoint, PrismaticJointLimitsManager]" in tree
+    )
+    scene = SceneDocument.load(project / SCENE)
+    base = scene.find_gameobject("bot/base")
+    rigidbody = next(c for c in scene.components_of(base) if c.type_name == "Rigidbody")
+    joint = "bot/base/arm", "ConfigurableJoint"
+    assert _field(project, *joint, "m_ConnectedBody") == {"fileID": str(rigidbody.file_id)}
+    assert _field(project, *joint, "m_Axis") == {"x": "-1", "y": "0", "z": "0"}  # ROS's y
+    assert _field(project, *joint, "m_XMotion") == "1"  # Limited; the rest Locked
+    assert _field(project, *joint, "m_AngularZMotion") == "0"
+    assert _field(project, *joint, "m_XDrive") == {
+        "serializedVersion": "4",
+        "positionSpring": "0.2",
+        "positionDamper": "0.7",
+        "maximumForce": "3.4028235e+38",
+        "useAcceleration": "0",
+    }
+    assert _field(project, *joint, "m_YDrive")["maximumForce"] == "3.4028233e+38"  # type: ignore[index]
+    # the manager (a MonoBehaviour, found by its fields)
+    assert (
+        "  PositionLimitMin: -0.05\n  PositionLimitMax: 0.3\n  Tolerance: 0.01\n"
+        in (project / SCENE).read_text()
+    )
+    before = snapshot(project)
+    again = _apply(project)
+    assert again.code == 0 and snapshot(project) == before
+    assert _apply(project, "", "--check").code == 0
+
+
+def test_a_changed_prismatic_limit_is_put_back_by_apply(project: Path) -> None:
+    build_tree(project, {"ros/bot.urdf": PRISMATIC})
+    assert _apply(project).code == 0
+    path = project / SCENE
+    text = path.read_text()
+    path.write_text(text.replace("  m_XMotion: 1\n", "  m_XMotion: 2\n", 1))
+    assert _apply(project, "", "--check").code != 0
+    assert _apply(project).code == 0
+    assert path.read_text() == text
+
+
+def test_a_planar_joint_with_an_unchecked_normal_is_refused_at_its_joint(project: Path) -> None:
+    build_tree(project, {"ros/bot.urdf": URDF.replace('type="revolute"', 'type="planar"')})
     (project / "robot.yaml").write_text(HEADER)
     before = snapshot(project)
     run = run_cli("apply", str(project / "robot.yaml"))
     assert run.code == 2, run.out + run.err
-    assert "bot.urdf:16:3:" in run.err and "ConfigurableJoint" in run.err
+    assert "bot.urdf:16:3:" in run.err and "planar joint 'j' has a normal (0 1 0)" in run.err
     assert snapshot(project) == before
 
 

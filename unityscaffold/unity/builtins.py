@@ -5,8 +5,9 @@ component added in the editor starts with and what the field stores (the kinds o
 ``unity/catalog.py``; ``block`` for a nested mapping that is copied as it is and cannot be set).
 The order and the form were read off scenes Unity 2022.3 saved (ROS#'s sample scenes; the tests
 compare new documents with them byte for byte); the table itself is written here, the mesh
-components' in ``_builtin_meshes`` with the primitives and built-in assets. An ``asset:Class``
-field names an asset (``apply/_assets.py``).
+components' in ``_builtin_meshes`` with the primitives and built-in assets, the joints only the
+URDF import writes in ``_joint_layouts``. An ``asset:Class`` field names an asset
+(``apply/_assets.py``).
 
 Also the built-in tags and layers every project has, which need no ``TagManager.asset``.
 """
@@ -24,6 +25,7 @@ from unityscaffold.unity._builtin_meshes import (
     UNCHECKED_PRIMITIVES,
     Primitive,
 )
+from unityscaffold.unity._joint_layouts import JOINT_LAYOUTS
 from unityscaffold.unity.catalog import CatalogField
 
 __all__ = [
@@ -249,48 +251,10 @@ for _name, (_class_id, _fields) in MESH_LAYOUTS.items():
 #: The classes a manifest may declare, sorted.
 BUILTIN_TYPES = tuple(sorted(_LAYOUTS))
 
-_JOINT_TAIL = (
-    _Field("m_BreakForce", "float", "Infinity"),
-    _Field("m_BreakTorque", "float", "Infinity"),
-    _Field("m_EnableCollision", "bool", "0"),
-    _Field("m_EnablePreprocessing", "bool", "1"),
-    _Field("m_MassScale", "float", "1"),
-    _Field("m_ConnectedMassScale", "float", "1"),
-)
-_CONNECTED = (
-    _Field("m_ConnectedBody", "ref:Rigidbody", "{fileID: 0}"),
-    _Field("m_ConnectedArticulationBody", "asset", "{fileID: 0}"),
-)
-
-#: Classes the URDF import writes that a manifest cannot declare (yet): their 2022.3 layouts,
-#: read off the scene Unity saved after ROS#'s importer built r2d2.
-_IMPORTED_LAYOUTS: dict[str, tuple[int, tuple[_Field, ...]]] = {
-    "FixedJoint": (138, (*_CONNECTED, *_JOINT_TAIL)),
-    "HingeJoint": (
-        59,
-        (
-            *_CONNECTED,
-            _Field("m_Anchor", "Vector3", "{x: 0, y: 0, z: 0}"),
-            _Field("m_Axis", "Vector3", "{x: 1, y: 0, z: 0}"),
-            _Field("m_AutoConfigureConnectedAnchor", "bool", "1"),
-            _Field("m_ConnectedAnchor", "Vector3", "{x: 0, y: 0, z: 0}"),
-            _Field("serializedVersion", "fixed", "2"),
-            _Field("m_UseSpring", "bool", "0"),
-            _Field("m_Spring", "block", "\n    spring: 0\n    damper: 0\n    targetPosition: 0"),
-            _Field("m_UseMotor", "bool", "0"),
-            _Field("m_Motor", "block", "\n    targetVelocity: 0\n    force: 0\n    freeSpin: 0"),
-            _Field("m_UseLimits", "bool", "0"),
-            _Field("m_ExtendedLimits", "bool", "0"),
-            _Field("m_UseAcceleration", "bool", "0"),
-            _Field(
-                "m_Limits",
-                "block",
-                "\n    min: 0\n    max: 0\n    bounciness: 0\n    bounceMinVelocity: 0.2"
-                "\n    contactDistance: 0",
-            ),
-            *_JOINT_TAIL,
-        ),
-    ),
+#: Classes the URDF import writes that a manifest cannot declare (yet): the joints.
+_IMPORTED_LAYOUTS = {
+    name: (class_id, tuple(_Field(*f) for f in fields))
+    for name, (class_id, fields) in JOINT_LAYOUTS.items()
 }
 
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import TypeAlias
 
 from unityscaffold.unity.values import AssetRef, Enum, FieldValue, InlineMap
+from unityscaffold.urdf import _configurable as c
 from unityscaffold.urdf import transforms as t
 from unityscaffold.urdf._inertia import principal_axes
 from unityscaffold.urdf.model import (
@@ -178,11 +179,10 @@ def joint_components(joint: Joint, key: str, parent_key: str) -> list[ImportedCo
     )
     if joint.type is JointType.FIXED:  # a FixedJoint serializes no anchors
         return [script, ImportedComponent("FixedJoint", connected[:1])]
-    if joint.type not in (JointType.REVOLUTE, JointType.CONTINUOUS):
-        # ConfigurableJoint's fields: no Unity 2022.3 file with one has been checked yet
-        found = [script, ImportedComponent("ConfigurableJoint", connected)]
+    if joint.type not in (JointType.REVOLUTE, JointType.CONTINUOUS):  # see _configurable
+        found = [script, ImportedComponent("ConfigurableJoint", (*connected, *c.fields(joint)))]
         if joint.type is JointType.PRISMATIC:
-            found.append(ImportedComponent("PrismaticJointLimitsManager"))
+            found.append(ImportedComponent("PrismaticJointLimitsManager", c.limits(joint)))
         return found
     # in Unity's order of HingeJoint's fields
     hinge: list[tuple[str, Value]] = [

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 from unityscaffold.unity.prefabinstance import ModelInstance
-from unityscaffold.urdf._configurable import refuse_configurable_joints
+from unityscaffold.urdf._configurable import refuse_unchecked_joints
 from unityscaffold.urdf._load import read_urdf
 from unityscaffold.urdf._packages import ResolvedMesh, resolve_meshes
 from unityscaffold.urdf.materials import importer_materials
@@ -53,7 +53,7 @@ def import_robot(
     what ROS#'s importer would (a ``.xacro`` expanded with ``xacro_args``): every problem is
     a located error, and nothing is written."""
     robot = read_urdf(urdf, packages=packages, xacro_args=xacro_args)
-    refuse_configurable_joints(robot)
+    refuse_unchecked_joints(robot)
     meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
     files = {f"Materials/{name}": text for name, text in importer_materials(robot).items()}
     counts: dict[ResolvedMesh, int] = {}
