@@ -14,6 +14,7 @@ from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._references import paths_in, untyped_value
+from unityscaffold.apply._robot_fields import refuse_owned_fields
 from unityscaffold.apply._target import target_for
 from unityscaffold.apply._typed import check_names
 from unityscaffold.apply._wiring import catalog_values, hand_set_connector, requirements
@@ -102,6 +103,7 @@ def attach_entries(
         ref = scripts[id(entry)]
         facts = ctx.facts(ref)
         where = entry.locations.of("gameobject")
+        refuse_owned_fields(editor, entry.gameobject, ref, entry.fields)
         editor.gameobject(entry.gameobject, entry.create, where)
         if facts is not None:
             check_names(facts.class_name, facts.fields, entry.fields)

@@ -14,6 +14,7 @@ from pathlib import Path
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._identity import Moved
 from unityscaffold.apply._lock import LockComponent, LockRobot
+from unityscaffold.apply._robot_owned import RobotFields
 from unityscaffold.errors import SourceLocation, UserError, located_at
 from unityscaffold.unity import (
     GameObject,
@@ -80,6 +81,8 @@ class SceneEditor:
         self.adopted: dict[tuple[str, str, int, str], int] = {}  # ... + id -> instance taken
         # (path, lock entry) of components an earlier apply made that are gone from the scene
         self.deleted: set[tuple[str, str]] = set()
+        # fileID -> the fields a robot's import enforces on that component of it
+        self.robot_fields: dict[int, RobotFields] = {}
 
     def path(self, named: str) -> str:
         """Where the GameObject the manifest calls ``named`` is (renames followed)."""

@@ -25,7 +25,9 @@ from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._lock import LockFile, LockRobot
 from unityscaffold.apply._robot_adopt import adopt_existing, keep_unity_rounding
+from unityscaffold.apply._robot_fields import refuse_owned_builtin_fields
 from unityscaffold.apply._robot_models import model_documents
+from unityscaffold.apply._robot_owned import owned_fields
 from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.manifest.model import SceneObject
@@ -127,6 +129,7 @@ def refuse_reshaped_robot_objects(editor: SceneEditor, objects: Sequence[SceneOb
                 hint="move the robot with its `robots` entry's position and rotation, change "
                 "the URDF, or put what you add on a child object of your own",
             )
+    refuse_owned_builtin_fields(editor, objects)
 
 
 def _is_gameobject(editor: SceneEditor, file_id: int) -> bool:
@@ -144,6 +147,7 @@ def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: Lo
     writer = _writer(ctx, editor, robot, lock, holder.file_id if holder else None)
     objects = writer.objects(robot.imported.objects, parent)
     before = lock.robot_ids(scene, robot.gameobject)
+    editor.robot_fields.update(owned_fields(robot.gameobject, objects))
     _remove(editor, robot.gameobject, set(before - writer.used))
     taken = tuple(sorted((f"{k} {r}", i) for (k, r), i in writer.taken.items() if i in writer.used))
     editor.plan.robots.append(LockRobot(scene, robot.gameobject, tuple(sorted(writer.used)), taken))
