@@ -93,6 +93,16 @@ def test_an_entry_that_sets_a_field_the_import_owns_is_refused_at_the_field(
     assert snapshot(project) == before
 
 
+def test_the_switches_of_the_robots_entry_are_named_in_the_hint(project: Path) -> None:
+    body = (
+        "objects:\n  - {path: bot/base/arm, components: [{type: Rigidbody, fields: "
+        "{m_IsKinematic: true}}]}\n"
+    )
+    run = _apply(project, body)
+    assert run.code == 2, run.out + run.err
+    assert "hint: set `kinematic` on the robot's `robots` entry" in run.err
+
+
 def test_fields_the_import_leaves_alone_stay_the_users_to_set(project: Path) -> None:
     body = (
         "objects:\n  - {path: bot/base, components: [{type: Rigidbody, fields: {m_Drag: 0.5}}]}\n"
@@ -105,3 +115,30 @@ def test_fields_the_import_leaves_alone_stay_the_users_to_set(project: Path) -> 
     again = _apply(project, body)
     assert again.code == 0 and "the project matches the manifest" in again.out, again.out
     assert snapshot(project) == before
+
+
+def test_a_switch_removed_from_the_robots_entry_puts_the_imports_value_back(
+    project: Path,
+) -> None:
+    """The manifest is the truth: the switches left out are the importer's values, enforced."""
+    assert _apply(project, "    kinematic: true\n    gravity: false\n").code == 0
+    assert _field(project, "bot/base/arm", "Rigidbody", "m_IsKinematic") == "1"
+    assert _field(project, "bot/base/arm", "Rigidbody", "m_UseGravity") == "0"
+    run = _apply(project)
+    assert run.code == 0, run.err
+    assert "update bot/base/arm (robot bot)" in run.out
+    for link in ("bot/base", "bot/base/arm"):
+        assert _field(project, link, "Rigidbody", "m_IsKinematic") == "0"
+        assert _field(project, link, "Rigidbody", "m_UseGravity") == "1"
+    assert _apply(project, "", "--check").code == 0
+
+
+def test_a_switch_flipped_in_unity_is_drift_put_back(project: Path) -> None:
+    assert _apply(project).code == 0
+    scene = project / SCENE
+    text = scene.read_text()
+    assert text.count("m_IsKinematic: 0") == 2
+    scene.write_text(text.replace("m_IsKinematic: 0", "m_IsKinematic: 1"))
+    assert _apply(project, "", "--check").code != 0
+    assert _apply(project).code == 0
+    assert scene.read_text() == text

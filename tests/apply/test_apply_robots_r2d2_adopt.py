@@ -85,7 +85,8 @@ def test_what_adopting_changes_is_listed_with_the_keys_that_keep_hand_edits(
     project: Path,
 ) -> None:
     """Without the entry's pose and switches, the robot is put where its URDF and the entry
-    say: the root to [0, 0, 0] and the model colliders not convex, each listed."""
+    say: the root to [0, 0, 0], the links' Rigidbodies to the importer's switches and the
+    model colliders not convex, each listed."""
     manifest = project / "robot.yaml"
     text = manifest.read_text()
     for line in ("position: [0, 0.47, 0]", "kinematic: true", "gravity: false", "convex: true"):
@@ -96,7 +97,10 @@ def test_what_adopting_changes_is_listed_with_the_keys_that_keep_hand_edits(
     changed = [line.strip() for line in run.out.splitlines() if "(robot r2d2)" in line]
     assert "update r2d2 (robot r2d2)" in changed
     assert sum(line.startswith("update --- !u!64 &") for line in changed) == 4
-    assert len(changed) == 5
+    # the switches left out are the importer's: each link's Rigidbody not kinematic, with gravity
+    links = [line for line in changed if line.startswith("update r2d2/base_link")]
+    assert len(links) == 16
+    assert len(changed) == 5 + len(links)
     assert "note: adopting robot r2d2 changes what differs from its URDF and entry" in run.out
     again = run_cli("apply", str(manifest))
     assert again.code == 0 and "note:" not in again.out and "wrote 0 files" in again.out

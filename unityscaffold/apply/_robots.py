@@ -382,14 +382,14 @@ def _full_limits(value: FieldValue) -> FieldValue:
 def _with_switches(
     name: str, fields: list[tuple[str, FieldValue]], robot: PlannedRobot, obj: ImportedObject
 ) -> list[tuple[str, FieldValue]]:
-    """UrdfRobot's inspector switches, as its buttons set them after an import."""
+    """UrdfRobot's inspector switches, as its buttons set them after an import; a switch the
+    entry leaves out is the import's value (a new Rigidbody's), enforced like the others, so
+    that removing it from the manifest puts the scene back."""
     entry = robot.entry
     extra: list[tuple[str, FieldValue]] = []
     if name == "Rigidbody":
-        if entry.gravity is not None:
-            extra.append(("m_UseGravity", entry.gravity))
-        if entry.kinematic is not None:
-            extra.append(("m_IsKinematic", entry.kinematic))
+        extra.append(("m_UseGravity", True if entry.gravity is None else entry.gravity))
+        extra.append(("m_IsKinematic", False if entry.kinematic is None else entry.kinematic))
     if name == "MeshCollider" and entry.convex is not None and obj.role is Role.SHAPE:
         fields = [(n, v) for n, v in fields if n != "m_Convex"]
         extra.append(("m_Convex", entry.convex))

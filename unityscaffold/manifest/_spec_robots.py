@@ -72,13 +72,13 @@ ROBOT = Section(
         Key(
             "kinematic",
             "UrdfRobot's *Is Kinematic*: every link's Rigidbody `m_IsKinematic`. "
-            "Left out: not enforced (a new robot is imported not kinematic).",
+            "Left out: `false`, as the importer makes them.",
             BOOL,
         ),
         Key(
             "gravity",
             "UrdfRobot's *Use Gravity*: every link's Rigidbody `m_UseGravity`. "
-            "Left out: not enforced (a new robot is imported with gravity).",
+            "Left out: `true`, as the importer makes them.",
             BOOL,
         ),
         Key(

@@ -15,7 +15,7 @@ class RobotEntry:
     """One robot. ``urdf`` and the ``packages`` folders are absolute; ``gameobject`` and
     ``assets`` are None until the URDF names the robot (their defaults are the robot's name
     and ``Assets/Urdf/<robot name>``). ``kinematic``, ``gravity`` and ``convex`` are the
-    UrdfRobot inspector's switches, None to keep what the importer sets; ``plugin_newline`` is
+    UrdfRobot inspector's switches, None for what the importer sets; ``plugin_newline`` is
     the newline of the plugin texts (``\\r\\n``, as ROS#'s importer writes them on Windows);
     ``args`` are the xacro arguments of a ``.xacro`` ``urdf``."""
 
