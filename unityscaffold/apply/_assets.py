@@ -9,6 +9,7 @@ main object, whose fileID is its class ID times 100000, and the GUID of its ``.m
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
@@ -38,14 +39,21 @@ _CLASSES = {
 
 
 def asset_value(
-    kind: str, value: ManifestValue, where: SourceLocation, field: str, project_root: Path
+    kind: str,
+    value: ManifestValue,
+    where: SourceLocation,
+    field: str,
+    project_root: Path,
+    planned: Mapping[str, AssetRef],
 ) -> FieldValue:
     """``value`` (a name, a path, null, or a list of them for ``asset:Class[]``) as the
-    references Unity stores; a located error for anything it cannot name."""
+    references Unity stores; a located error for anything it cannot name. ``planned`` are the
+    assets this apply writes (a robot's materials), by path: named by the plan's GUIDs, the
+    same on the first apply, before they are on disk, as on every later one."""
     if kind.endswith("[]"):
         if not isinstance(value, tuple):
             raise _wrong(kind, value, where, field)
-        return [asset_value(kind[:-2], item, where, field, project_root) for item in value]
+        return [asset_value(kind[:-2], item, where, field, project_root, planned) for item in value]
     if isinstance(value, EmptyReference):
         return ObjectRef(0)
     wanted = _CLASSES[kind.removeprefix("asset:")]
@@ -55,6 +63,8 @@ def asset_value(
         return wanted.builtins[value]
     if not value.startswith(("Assets/", "Packages/")):
         raise _wrong(kind, value, where, field)
+    if value in planned and value.endswith(wanted.suffix):
+        return planned[value]
     return _project_asset(value, wanted, where, field, project_root)
 
 

@@ -13,7 +13,7 @@ from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.apply._rossharp import PACKAGE, RosSharp
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import Component, Manifest
-from unityscaffold.unity import ScriptRef
+from unityscaffold.unity import AssetRef, ScriptRef
 from unityscaffold.unity.behaviours import Kind, base_class, kind_of
 from unityscaffold.unity.catalog import CatalogScript, rossharp_catalog
 from unityscaffold.unity.project import ScriptInfo, script_ref_for_file
@@ -59,6 +59,10 @@ class SceneContext:
         if any(s.guid == script.guid for s in self.code.scripts):
             return None  # apply writes a generated script's fields itself
         return self.known.of(script.guid)
+
+    def robot_assets(self) -> dict[str, AssetRef]:
+        """The native assets the robots write (materials, meshes) by project path."""
+        return {path: ref for robot in self.robots for path, ref in robot.asset_refs().items()}
 
     def defaults(self, script: ScriptRef) -> NewFields:
         """Every field a new component of ``script`` is written with (see ``ScriptFacts``);

@@ -9,7 +9,7 @@ component of the scene exists (``set_builtin_references``).
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -18,7 +18,7 @@ from unityscaffold.apply._primitives import primitive_components
 from unityscaffold.apply._typed import Resolver, check_names, typed_value
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
-from unityscaffold.unity import FieldValue, GameObject, InlineMap, SceneDocument
+from unityscaffold.unity import AssetRef, FieldValue, GameObject, InlineMap, SceneDocument
 from unityscaffold.unity.builtins import BUILTIN_TAGS, builtin_class
 from unityscaffold.unity.rotation import euler_to_quaternion
 
@@ -126,7 +126,7 @@ def _place(doc: SceneDocument, item: SceneObject, path: str) -> tuple[GameObject
 
 
 def _builtin_values(
-    comp: BuiltinComponent, references: bool, resolve: Resolver, project_root: Path
+    comp: BuiltinComponent, references: bool, hooks: Hooks, project_root: Path
 ) -> list[tuple[str, FieldValue]]:
     builtin = builtin_class(comp.type)
     assert builtin is not None  # the manifest accepts only supported classes
@@ -137,9 +137,11 @@ def _builtin_values(
         if kind.startswith("ref:") != references:
             continue
         if kind.startswith("asset:"):
-            value = asset_value(kind, item.value, item.location, item.name, project_root)
+            value = asset_value(
+                kind, item.value, item.location, item.name, project_root, hooks.assets
+            )
         else:
-            value = typed_value(kind, item.value, item.location, item.name, {}, resolve)
+            value = typed_value(kind, item.value, item.location, item.name, {}, hooks.resolve)
         values.append((item.name, value))
     return values
 
@@ -152,11 +154,13 @@ def _declared_components(item: SceneObject) -> tuple[BuiltinComponent, ...]:
 @dataclass(frozen=True, slots=True)
 class Hooks:
     """What the scene editor lends: where a named object is now (renames followed), a record of
-    the objects used (for the lock's identities), and the reference resolver."""
+    the objects used (for the lock's identities), the reference resolver, and the assets this
+    apply writes by path (a robot's materials, whose ``.meta`` may not be on disk yet)."""
 
     now: Callable[[str], str]
     record: Callable[[GameObject], None]
     resolve: Resolver
+    assets: Mapping[str, AssetRef]
 
 
 @dataclass(frozen=True, slots=True)
@@ -223,7 +227,7 @@ def _ensure(
     builtin = builtin_class(comp.type)
     assert builtin is not None  # the manifest accepts only supported classes
     with located_at(comp.location):
-        values = _builtin_values(comp, references, hooks.resolve, project_root)
+        values = _builtin_values(comp, references, hooks, project_root)
         if references and not values:
             return
         go = hooks.now(item.path)

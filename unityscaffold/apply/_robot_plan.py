@@ -15,6 +15,7 @@ from unityscaffold.errors import LocatedError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.manifest.model import Manifest
 from unityscaffold.manifest.robot_entry import RobotEntry
+from unityscaffold.unity import AssetRef
 from unityscaffold.unity.mesh import MESH_FILE_ID
 from unityscaffold.unity.meta import folder_meta, meta_guid, native_format_meta
 from unityscaffold.urdf import RobotImport, import_robot
@@ -38,6 +39,17 @@ class PlannedRobot:
     files: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
     metas: tuple[DesiredFile, ...]  # .meta files: written only if missing
     guids: dict[str, str]
+
+    def asset_refs(self) -> dict[str, AssetRef]:
+        """The native assets it writes (``.mat`` materials, Mesh ``.asset`` files) by project
+        path, as a field refers to them: known from the plan, so that an ``objects:`` entry can
+        name one on the apply that first writes it (its ``.meta`` is not on disk yet)."""
+        return {
+            f"{self.assets}/{relative}": AssetRef(
+                _MAIN_OBJECT[PurePosixPath(relative).suffix], self.guids[relative], 2
+            )
+            for relative in self.imported.files
+        }
 
 
 def plan_robots(manifest: Manifest, salt: str) -> list[PlannedRobot]:

@@ -117,7 +117,7 @@ def _declare_objects(ctx: SceneContext, editor: SceneEditor) -> DeclaredObjects 
     def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
         return typed_reference(ctx, editor, path, declared, where)
 
-    hooks = Hooks(editor.path, editor.record, resolve)
+    hooks = Hooks(editor.path, editor.record, resolve, ctx.robot_assets())
     return declare_objects(editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks)
 
 
