@@ -137,6 +137,10 @@ def test_an_edit_to_an_included_file_is_seen_by_the_next_check(
             "error: $(env ...) would make the URDF depend on this machine",
         ),
         (
+            lambda p: p.replace("$(arg name)", "$(cwd)"),
+            "error: $(cwd) (the folder apply runs in) would make the URDF depend on this machine",
+        ),
+        (
             lambda p: p.replace("</robot>", "</robt>"),
             f"{XACRO}:21:3: error: not well-formed XML: mismatched tag",
         ),
@@ -170,3 +174,19 @@ def test_without_the_xacro_package_the_error_names_the_extra_to_install(
     assert "robot.yaml:6:11: error:" in run.err and "the xacro package is not installed" in run.err
     assert "pip install 'unityscaffold[xacro]'" in run.err
     assert snapshot(project) == before
+
+
+def test_xacros_warnings_are_notes_naming_the_file_and_never_reach_stderr(
+    project: Path,
+) -> None:
+    parts = project / "ros/bot_description/urdf/parts.xacro"
+    parts.write_text(
+        PARTS.replace(
+            '<xacro:property name="radius"',
+            '<xacro:property name="pi" value="3"/>\n  <xacro:property name="radius"',
+        )
+    )
+    run = _apply(project, ENTRY)
+    assert run.code == 0, run.err
+    assert run.err == ""
+    assert f"note: {parts}: xacro warns: redefining global symbol: pi" in run.out, run.out

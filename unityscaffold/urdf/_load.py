@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -43,9 +44,10 @@ def read_urdf(
     path = Path(path)
     try:
         if is_xacro(path) and path.is_file():
-            raw = expand_xacro(path, packages=packages or {}, args=xacro_args or {})
+            expanded = expand_xacro(path, packages=packages or {}, args=xacro_args or {})
             # the expanded URDF has no file of its own: its lines are the xacro output's
-            return parse_urdf(raw, f"{path} (expanded by xacro)")
+            robot = parse_urdf(expanded.urdf, f"{path} (expanded by xacro)")
+            return dataclasses.replace(robot, notes=expanded.warnings)
         raw = path.read_bytes()
     except OSError as error:
         raise UserError(

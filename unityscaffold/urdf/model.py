@@ -215,7 +215,8 @@ class Plugin:
 
 @dataclass(frozen=True, slots=True)
 class Robot:
-    """A URDF robot. ``root`` is the one link that is no joint's child."""
+    """A URDF robot. ``root`` is the one link that is no joint's child; ``notes`` are what
+    reading it warned about (xacro's warnings), each ``<file>: <text>``."""
 
     name: str
     links: tuple[Link, ...]
@@ -223,6 +224,7 @@ class Robot:
     materials: tuple[Material, ...] = ()
     plugins: tuple[Plugin, ...] = ()
     location: SourceLocation = field(default=_NOWHERE, compare=False, repr=False)
+    notes: tuple[str, ...] = field(default=(), compare=False, repr=False)
 
     @property
     def root(self) -> Link:
