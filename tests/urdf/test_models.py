@@ -235,6 +235,38 @@ def test_a_material_on_a_mesh_visual_is_refused_at_the_material(
     assert "hint: remove the <material>" in message
 
 
+@pytest.mark.parametrize(
+    ("first", "second", "written"),
+    [
+        ("meshes/G1_Rod.STL", "meshes/G1_Rod.stl", "desc/meshes/G1_Rod.prefab"),
+        ("meshes/G1_Rod.STL", "meshes/g1_rod.STL", "desc/meshes/g1_rod.prefab"),
+        ("meshes/G1_Rod.STL", "Meshes/G1_Rod.STL", "desc/Meshes/G1_Rod.prefab"),
+    ],
+)
+def test_two_mesh_files_whose_names_differ_only_by_case_are_refused_at_the_second(
+    tmp_path: Path, niryo: Path, first: str, second: str, written: str
+) -> None:
+    """Windows and macOS, where Unity opens the project, would make one file of their assets
+    (and ``arm.STL`` and ``arm.stl`` would even share one prefab path on Linux)."""
+    urdf = stl_robot(
+        tmp_path,
+        niryo,
+        f'<visual><geometry><mesh filename="package://desc/{first}"/></geometry></visual>\n'
+        f'<collision><geometry><mesh filename="package://desc/{second}"/></geometry>'
+        "</collision>\n",
+    )
+    copy = tmp_path / "desc" / second
+    copy.parent.mkdir(exist_ok=True)
+    shutil.copy(niryo / "G1_Rod.STL", copy)
+    message = refusal(urdf, tmp_path)
+    assert message.startswith(
+        f"{urdf}:4:22: error: mesh 'package://desc/{second}' would be written as "
+        f"{written}, which on a case-insensitive file system (Windows, macOS) is the file of "
+        f"mesh 'package://desc/{first}' (line 3)"
+    ), message
+    assert "hint: rename one of the two mesh files" in message
+
+
 @pytest.mark.parametrize("suffix", [".obj", ".fbx"])
 def test_other_model_formats_are_refused_at_the_mesh(tmp_path: Path, suffix: str) -> None:
     (tmp_path / "desc").mkdir()

@@ -142,6 +142,8 @@ class _Builder:
         self.assets: dict[str, ModelAsset] = {}
         self.collada: dict[Path, ColladaFacts] = {}
         self.made: dict[tuple[ResolvedMesh, bool], ModelInstance | None] = {}
+        # each asset path in lower case, with the mesh that first wrote there
+        self.claimed: dict[str, tuple[ResolvedMesh, Mesh]] = {}
 
     def instance(
         self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool
@@ -154,8 +156,16 @@ class _Builder:
     def _made(self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance | None:
         suffix = resolved.relative.suffix.lower()
         if suffix == ".stl":
-            return self._stl(resolved, collision=collision)
+            stem = PurePosixPath(resolved.package) / resolved.relative.with_suffix("")
+            return (
+                self._stl(resolved, collision=collision)
+                if self._claim(f"{stem}.prefab", resolved, mesh)
+                else None
+            )
         if suffix == ".dae":
+            path = PurePosixPath(resolved.package) / resolved.relative
+            if not self._claim(str(path), resolved, mesh):
+                return None
             return self._collada(mesh, resolved, collision=collision)
         self.sink.error(
             mesh.location,
@@ -165,6 +175,23 @@ class _Builder:
             hint="convert the mesh to STL or COLLADA (.dae, Y up)",
         )
         return None
+
+    def _claim(self, path: str, resolved: ResolvedMesh, mesh: Mesh) -> bool:
+        """Whether ``path`` is this mesh file's alone, ignoring case: Windows and macOS, where
+        Unity users open the project, would make one file of ``arm.prefab`` and
+        ``Arm.prefab`` (and of ``arm.STL``'s and ``arm.stl``'s, the same path here)."""
+        first, where = self.claimed.setdefault(path.lower(), (resolved, mesh))
+        if first == resolved:
+            return True
+        self.sink.error(
+            mesh.location,
+            f"mesh {mesh.filename!r} would be written as {path}, which on a case-insensitive "
+            f"file system (Windows, macOS) is the file of mesh {where.filename!r} (line "
+            f"{where.location.line}): their names differ only by case",
+            hint="rename one of the two mesh files (and its <mesh filename>) so that their "
+            "names differ by more than case",
+        )
+        return False
 
     def _stl(self, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance:
         folder = PurePosixPath(resolved.package) / resolved.relative.parent
