@@ -49,6 +49,15 @@ def test_kept_files_are_listed_only_when_there_are_some_and_read_back(tmp_path):
     assert LockFile.read(path) == kept
 
 
+def test_robot_folders_are_listed_only_when_there_are_some_and_read_back(tmp_path):
+    path = tmp_path / "robot.lock.json"
+    assert '"folders"' not in LockFile().render()
+    lock = LockFile(folders=frozenset({"Assets/Urdf/bot", "Assets/Urdf"}))
+    assert '"folders": [\n    "Assets/Urdf",\n    "Assets/Urdf/bot"\n  ]' in lock.render()
+    path.write_text(lock.render())
+    assert LockFile.read(path) == lock
+
+
 def test_robots_are_listed_only_when_there_are_some_merged_and_read_back(tmp_path):
     path = tmp_path / "robot.lock.json"
     assert '"robots"' not in LockFile().render()
@@ -196,6 +205,11 @@ def _components(*items: str) -> str:
         (
             _lock(_components(), '"kept": ["Assets/a.cs", "../a.cs"]'),
             f'kept[1] should be {_INSIDE}, found the string "../a.cs"',
+        ),
+        (_lock(_components(), '"folders": 1'), "folders should be a list, found the number 1"),
+        (
+            _lock(_components(), '"folders": ["/etc"]'),
+            f'folders[0] should be {_INSIDE}, found the string "/etc"',
         ),
     ],
 )

@@ -38,14 +38,19 @@ def temp_leftovers_of(files: Sequence[Path]) -> list[Path]:
 
 
 def plan_leftovers(
-    manifest: Manifest, desired: Iterable[Path], deletions: Sequence[Path], extra: Iterable[Path]
+    manifest: Manifest,
+    desired: Iterable[Path],
+    deletions: Sequence[Path],
+    extra: Iterable[Path],
+    made: Iterable[Path] = (),
 ) -> list[Path]:
     """Temporary files to remove, then folders left empty (deepest first) with their ``.meta``.
 
     ``desired`` are the files the plan writes or keeps, ``deletions`` those it removes already,
-    ``extra`` more files whose folders may hold temporary files (scenes, settings).
-    Only folders inside ``Assets/`` that are the output folder, inside it, or held a removed
-    file are candidates: a folder apply never wrote to is never touched.
+    ``extra`` more files whose folders may hold temporary files (scenes, settings), ``made``
+    folders an earlier apply made (a robot's, which a user's file may have held up since).
+    Only folders inside ``Assets/`` that are the output folder, inside it, ``made``, or held a
+    removed file are candidates: a folder apply never wrote to is never touched.
     """
     wanted = set(desired)
     assets = manifest.project_root / "Assets"
@@ -53,7 +58,7 @@ def plan_leftovers(
     inside_output = _output_folders(output)
     temps = temp_leftovers([*inside_output, *{p.parent for p in (*wanted, *deletions, *extra)}])
     gone = {*deletions, *temps}
-    candidates = set(inside_output)
+    candidates = {*inside_output, *made}
     for path in gone:
         candidates.update(p for p in path.parents if p != assets and p.is_relative_to(assets))
     # Whether a wanted file lies under a folder, by a sorted list of paths as text: building

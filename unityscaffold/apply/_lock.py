@@ -14,6 +14,10 @@ such entries are matched by path, as they were then, and the next apply records 
 ``kept`` lists the files apply would have removed but kept because they were edited by hand; it
 was told once, in the run that kept them, and is not told again while they stay. A lock from
 before it was recorded has none, so such a file is told about once more.
+
+``folders`` lists the asset folders apply gave a ``.meta`` for a robot's files, for as long as
+they are on disk: one a user's file holds up when the robot goes is removed, with its ``.meta``,
+by the first apply that finds it empty.
 """
 
 from __future__ import annotations
@@ -243,6 +247,16 @@ def _kept(data: dict[str, object]) -> frozenset[str]:
     return frozenset(entries)
 
 
+def _folders(data: dict[str, object]) -> frozenset[str]:
+    entries = data.get("folders", [])
+    if not isinstance(entries, list):
+        raise _wrong("folders", "a list", entries)
+    for index, path in enumerate(entries):
+        if not _inside_assets(_string(path, f"folders[{index}]")):
+            raise _wrong(f"folders[{index}]", _INSIDE_ASSETS, path)
+    return frozenset(entries)
+
+
 def _parse(text: str) -> LockFile:
     """The lock in ``text``; raises ``_Malformed`` or ``ValueError``."""
     data = _object(json.loads(text), "the whole file")
@@ -256,6 +270,7 @@ def _parse(text: str) -> LockFile:
         _gameobjects(data),
         _kept(data),
         _robots(data),
+        _folders(data),
     )
 
 
@@ -267,6 +282,7 @@ class LockFile:
     gameobjects: tuple[LockGameObject, ...] = ()
     kept: frozenset[str] = frozenset()  # files kept as edited by hand, and told so
     robots: tuple[LockRobot, ...] = ()
+    folders: frozenset[str] = frozenset()  # asset folders apply made for robots
 
     def robot_ids(self, scene: str, gameobject: str) -> frozenset[int]:
         """The fileIDs apply made for the robot at ``gameobject`` in ``scene``."""
@@ -366,6 +382,7 @@ class LockFile:
                     {(r.scene, r.gameobject) for r in (*self.robots, *journal.robots)}
                 )
             ),
+            self.folders | journal.folders,
         )
 
     def render(self) -> str:
@@ -393,6 +410,7 @@ class LockFile:
             **({"kept": sorted(self.kept)} if self.kept else {}),
             **({"robots": robots} if (robots := self._rendered_robots()) else {}),
             **({"adopted": adopted} if (adopted := self._rendered_adopted()) else {}),
+            **({"folders": sorted(self.folders)} if self.folders else {}),
         }
         return json.dumps(data, indent=2, sort_keys=False, ensure_ascii=False) + "\n"
 

@@ -39,6 +39,7 @@ class PlannedRobot:
     files: tuple[DesiredFile, ...]  # regenerated freely; tracked in the lock
     metas: tuple[DesiredFile, ...]  # .meta files: written only if missing
     guids: dict[str, str]
+    folders: tuple[str, ...] = ()  # the asset folders holding them, each with a .meta
 
     def asset_refs(self) -> dict[str, AssetRef]:
         """The native assets it writes (``.mat`` materials, Mesh ``.asset`` files) by project
@@ -137,14 +138,16 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
         metas.append(DesiredFile(root / f"{asset}.meta", meta, create_only=True))
     _model_files(imported, root, assets, salt, guids, files, metas)
     every = [*imported.files, *(model.path for model in imported.model_assets)]
+    folders = _folders(assets, every)
     return PlannedRobot(
         entry,
         imported,
         entry.gameobject or name,
         assets,
         tuple(files),
-        tuple(metas + _folder_metas(root, assets, every, salt)),
+        tuple(metas + _folder_metas(root, folders, salt)),
         guids,
+        tuple(folders),
     )
 
 
@@ -196,15 +199,20 @@ def _model_files(
         metas.append(DesiredFile(root / f"{asset}.meta", meta, create_only=True))
 
 
-def _folder_metas(root: Path, assets: str, files: Iterable[str], salt: str) -> list[DesiredFile]:
-    """A ``.meta`` for each folder on the way to the files, made once (Unity would make
-    them itself, with random GUIDs)."""
+def _folders(assets: str, files: Iterable[str]) -> list[str]:
+    """Each folder on the way to the files, below ``Assets``."""
     folders: set[str] = set()
     for relative in files:
         parts = f"{assets}/{relative}".split("/")[:-1]
         folders.update("/".join(parts[: i + 1]) for i in range(1, len(parts)))
+    return sorted(folders)
+
+
+def _folder_metas(root: Path, folders: Iterable[str], salt: str) -> list[DesiredFile]:
+    """A ``.meta`` for each folder, made once (Unity would make them itself, with random
+    GUIDs)."""
     metas = []
-    for folder in sorted(folders):
+    for folder in folders:
         guid = meta_guid(root / f"{folder}.meta", salt, folder)
         metas.append(
             DesiredFile(root / f"{folder}.meta", folder_meta(guid).encode(), create_only=True)

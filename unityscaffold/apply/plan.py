@@ -7,6 +7,7 @@ changes and scene edits; nothing is written here (see ``apply.run``).
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -25,7 +26,7 @@ from unityscaffold.apply._lock import (
 )
 from unityscaffold.apply._moves import find_moves
 from unityscaffold.apply._prune import plan_pruning
-from unityscaffold.apply._robot_plan import plan_robots
+from unityscaffold.apply._robot_plan import PlannedRobot, plan_robots
 from unityscaffold.apply._rosbridge2 import rosbridge2_notes
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
@@ -170,7 +171,8 @@ def make_plan(
     deletions = pruning.deletions
     # Temporary files may sit beside any file apply writes: scenes, settings, generated files.
     beside = [manifest.scene_path(s) for s in manifest.scenes] + [project / _SETTINGS]
-    deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside)
+    made = [project / folder for folder in lock.folders]
+    deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside, made)
     target_notes = target_for(manifest).notes(project, rossharp)
     new_lock = LockFile(
         files={
@@ -186,6 +188,7 @@ def make_plan(
         ),
         kept=frozenset(pruning.kept_files) | frozenset(pruning.kept_user_files),
         robots=tuple(sorted(r for s in scenes for r in s.robots)),
+        folders=_robot_folders(robots, lock, project, deletions),
     )
     check_inside(project, [d.path for d in desired] + deletions)
     # Beside the manifest, outside the project: the lock's and the journal's temporary files,
@@ -210,3 +213,12 @@ def make_plan(
         skipped_types=len(code.messages.skipped),
         recovered_lock=recovered,
     )
+
+
+def _robot_folders(
+    robots: Iterable[PlannedRobot], lock: LockFile, project: Path, deletions: list[Path]
+) -> frozenset[str]:
+    """The robots' asset folders, and the ones an earlier apply made that are still there."""
+    gone = set(deletions)
+    kept = {f for f in lock.folders if (project / f) not in gone and (project / f).is_dir()}
+    return frozenset(f for r in robots for f in r.folders) | kept
