@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
+from typing import TYPE_CHECKING
 
 from unityscaffold.errors import LocatedError, located_at
 from unityscaffold.fileout import DesiredFile
@@ -18,7 +19,9 @@ from unityscaffold.manifest.robot_entry import RobotEntry
 from unityscaffold.unity import AssetRef
 from unityscaffold.unity.mesh import MESH_FILE_ID
 from unityscaffold.unity.meta import folder_meta, meta_guid, native_format_meta
-from unityscaffold.urdf import RobotImport, import_robot
+
+if TYPE_CHECKING:
+    from unityscaffold.urdf import RobotImport
 
 __all__ = ["PlannedRobot", "plan_robots"]
 
@@ -112,6 +115,8 @@ def _check_inputs(entry: RobotEntry) -> None:
 
 
 def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
+    from unityscaffold.urdf import import_robot  # loaded by manifests with robots only
+
     _check_inputs(entry)
     root = manifest.project_root
     with located_at(entry.locations.of("urdf")):
