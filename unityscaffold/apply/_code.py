@@ -10,13 +10,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from unityscaffold.apply._moves import Moves
 from unityscaffold.apply._target import RuntimeTarget, target_for
 from unityscaffold.codegen import GeneratedCode, Options
 from unityscaffold.codegen.layout import output_files
 from unityscaffold.codegen.naming import ClassClash
-from unityscaffold.codegen.scripts import Script, render_script
 from unityscaffold.errors import Diagnostic, LocatedError, UserError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.interfaces.model import (
@@ -31,6 +31,9 @@ from unityscaffold.interfaces.suffixes import ROS1_PART_SUFFIXES
 from unityscaffold.manifest.model import Action, Manifest, Service, Topic
 from unityscaffold.unity.meta import folder_meta, meta_guid, monoscript_meta
 from unityscaffold.unity.project import ScriptInfo
+
+if TYPE_CHECKING:
+    from unityscaffold.codegen.scripts import Script
 
 __all__ = ["CodePlan", "PlannedScript", "plan_code"]
 
@@ -246,6 +249,8 @@ def plan_code(
     planned: list[PlannedScript] = []
     known = {info.path: guid for guid, info in scripts.items()}
     for item, spec in items:
+        from unityscaffold.codegen.scripts import render_script  # loaded with the first script
+
         view = target.script_view(manifest, item, spec, messages)
         rendered = render_script(view)
         path, user_path = scripts_dir / rendered.plumbing_name, scripts_dir / rendered.user_name

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TypedDict
+from typing import TYPE_CHECKING, TypedDict
 
 from unityscaffold.codegen import ClassRole, GeneratedCode
-from unityscaffold.codegen.scripts import Script
 from unityscaffold.interfaces.model import Interface
 from unityscaffold.manifest.model import Action, Manifest, Service, Topic
+
+if TYPE_CHECKING:  # the views themselves load with the first script (see _target_rossharp)
+    from unityscaffold.codegen.scripts import Script
 
 __all__ = ["ScriptNames", "action_script", "script_names"]
 

@@ -8,17 +8,19 @@ from __future__ import annotations
 from collections.abc import Sequence
 from functools import cache
 from pathlib import Path
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.codegen import GeneratedCode, Options
-from unityscaffold.codegen.scripts import Script
 from unityscaffold.interfaces.model import Interface
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Action, Manifest, Service, Topic
 from unityscaffold.manifest.runtime import Runtime
 from unityscaffold.unity import ScriptRef
 from unityscaffold.unity.values import FieldValue
+
+if TYPE_CHECKING:
+    from unityscaffold.codegen.scripts import Script
 
 __all__ = ["RuntimeTarget", "target_for", "target_of"]
 

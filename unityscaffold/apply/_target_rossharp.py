@@ -5,25 +5,20 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from unityscaffold.apply._rossharp import RESERVED_NAMES, RosSharp
 from unityscaffold.apply._script_views import action_script, script_names
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
-from unityscaffold.codegen.scripts import (
-    ActionClientScript,
-    ActionServerScript,
-    PublisherScript,
-    Script,
-    ServiceClientScript,
-    ServiceServerScript,
-    SubscriberScript,
-)
 from unityscaffold.errors import LocatedError
 from unityscaffold.interfaces.model import Dialect, Interface
 from unityscaffold.interfaces.registry import Registry
 from unityscaffold.manifest.model import Action, Direction, Manifest, Role, Service, Topic
 from unityscaffold.unity import Enum, ScriptRef
 from unityscaffold.unity.values import FieldValue
+
+if TYPE_CHECKING:
+    from unityscaffold.codegen.scripts import Script
 
 __all__ = ["RosSharpTarget"]
 
@@ -75,6 +70,16 @@ class RosSharpTarget:
     def script_view(
         self, manifest: Manifest, item: Entry, spec: Interface, messages: GeneratedCode
     ) -> Script:
+        # the scripts' views load with the first script: a manifest of robots only needs none
+        from unityscaffold.codegen.scripts import (
+            ActionClientScript,
+            ActionServerScript,
+            PublisherScript,
+            ServiceClientScript,
+            ServiceServerScript,
+            SubscriberScript,
+        )
+
         if isinstance(item, Action):
             action = ActionClientScript if item.role is Role.CLIENT else ActionServerScript
             ros2 = manifest.ros is Dialect.ROS2
