@@ -157,12 +157,22 @@ def _component(docs: Documents, obj: OwnedObject, component: OwnedComponent) -> 
 def _fill(docs: Documents, doc: Doc, fields: Sequence[tuple[str, FieldValue]]) -> bool:
     """``set_fields`` for a document made in this run: its fields are replaced without first
     reading what they hold (a YAML parse per field, most of the time of a large import)."""
-    missing = []
-    for name, value in fields:
-        if F.field_span(doc, name) is None:
-            missing.append((name, value))
-        else:
+    spans = F.spans(doc)
+    missing = [(name, value) for name, value in fields if name not in spans]
+    present = [(name, value) for name, value in fields if name in spans]
+    if len({name for name, _ in present}) < len(present):  # a field given twice: in order
+        for name, value in present:
             T.replace_field(doc, name, _emit(docs, name, value))
+    elif present:
+        # one new text, not one per field: each replacement made the document's text again
+        # and found its keys again, the most of a large import's scene edits
+        emitted = {name: _emit(docs, name, value) for name, value in present}
+        pieces, at = [], 0
+        for name in sorted(emitted, key=lambda n: spans[n][0]):
+            start, end = spans[name]
+            pieces += [doc.text[at:start], *(line + "\n" for line in emitted[name])]
+            at = end
+        T.set_text(doc, "".join(pieces) + doc.text[at:])
     docs.touch(doc)
     return set_fields(docs, doc, missing) if missing else True
 
