@@ -1,8 +1,9 @@
 """An object's `primitive` and the mesh components (MeshFilter, MeshRenderer, MeshCollider):
 written as Unity 2022.3 writes them, compared with objects Unity 2022.3's 3D Object menu made —
 the Plane of ROS#'s Gazebo tutorial scene (tests/data, and the hand-made CameraPlane of its
-COMPLETED scene, read from ../shared/vendor) and a Cube of ROS#'s Unity simulation scene — and
-their asset fields naming Unity's built-in resources or the project's assets."""
+COMPLETED scene, read from ../shared/vendor), a Cube of ROS#'s Unity simulation scene, and the
+Sphere, Capsule, Cylinder and Quad of a public 2022.3 project (MENU_MADE) — and their asset
+fields naming Unity's built-in resources or the project's assets."""
 
 from __future__ import annotations
 
@@ -87,6 +88,81 @@ def test_a_plane_is_the_plane_unity_2022_3_made_with_create_primitive(project):
     assert [c for c, _ in ours] == ["Transform", "MeshFilter", "MeshRenderer", "MeshCollider"]
     for class_name, text in ours[1:]:
         assert _body(text) == _body(real[class_name]), class_name
+
+
+# What Unity 2022.3's GameObject > 3D Object menu put on a Sphere, a Capsule, a Cylinder and a
+# Quad, read off the prefabs a Unity 2022.3 project saved them as (its Packages/manifest.json
+# has URP 14.0.12, a 2022.3-only package; the objects are untouched but for their position):
+# https://github.com/Alex144xD/Tesis/blob/ec6bf96cdac34ab2d8201c77216547bbcb92bbd8/Assets/Prefabs/
+# (Sphere.prefab, "Capsule (1).prefab", Cylinder.prefab, Quad.prefab). Each has the Transform,
+# then the MeshFilter (this mesh), the MeshRenderer (Default-Material, the same document as the
+# Plane's below) and this collider, whose body (after m_GameObject) is copied here. The Capsule's
+# and the Cylinder's agree with those of another 2022.3 project's prefabs,
+# https://github.com/AFabulousWhale/EditorTools/blob/fc308952021becd38beb4d695232c45565a3da09/Assets/Prefabs/
+_COLLIDER_HEAD = (
+    "  m_Material: {fileID: 0}\n  m_IncludeLayers:\n    serializedVersion: 2\n    m_Bits: 0\n"
+    "  m_ExcludeLayers:\n    serializedVersion: 2\n    m_Bits: 0\n  m_LayerOverridePriority: 0\n"
+    "  m_IsTrigger: 0\n  m_ProvidesContacts: 0\n  m_Enabled: 1\n"
+)
+MENU_MADE = {
+    "sphere": (
+        "m_Mesh: {fileID: 10207, guid: 0000000000000000e000000000000000, type: 0}",
+        "SphereCollider",
+        "  serializedVersion: 3\n  m_Radius: 0.5\n  m_Center: {x: 0, y: 0, z: 0}\n",
+    ),
+    "capsule": (
+        "m_Mesh: {fileID: 10208, guid: 0000000000000000e000000000000000, type: 0}",
+        "CapsuleCollider",
+        "  serializedVersion: 2\n  m_Radius: 0.5\n  m_Height: 2\n  m_Direction: 1\n"
+        "  m_Center: {x: 0, y: 0, z: 0}\n",
+    ),
+    "cylinder": (
+        "m_Mesh: {fileID: 10206, guid: 0000000000000000e000000000000000, type: 0}",
+        "CapsuleCollider",
+        "  serializedVersion: 2\n  m_Radius: 0.5000001\n  m_Height: 2\n  m_Direction: 1\n"
+        "  m_Center: {x: 0.000000059604645, y: 0, z: -0.00000008940697}\n",
+    ),
+    "quad": (
+        "m_Mesh: {fileID: 10210, guid: 0000000000000000e000000000000000, type: 0}",
+        "MeshCollider",
+        "  serializedVersion: 5\n  m_Convex: 0\n  m_CookingOptions: 30\n"
+        "  m_Mesh: {fileID: 10210, guid: 0000000000000000e000000000000000, type: 0}\n",
+    ),
+}
+
+
+@pytest.mark.parametrize("shape", list(MENU_MADE))
+def test_each_other_primitive_is_the_one_unity_2022_3s_menu_made(project, shape):
+    mesh, collider, shape_fields = MENU_MADE[shape]
+    plane = _real_object(
+        (DATA / "gazebo_simulation_scene_ROS2_1_Camera.unity").read_text(), "Plane"
+    )
+    run = _apply(project, f"objects:\n  - {{path: Thing, primitive: {shape}}}\n")
+    assert run.code == 0, run.err
+    ours = _our_object(project, "Thing")
+    assert [c for c, _ in ours] == ["Transform", "MeshFilter", "MeshRenderer", collider]
+    assert _body(ours[1][1]).endswith(f"\n  {mesh}")
+    assert _body(ours[2][1]) == _body(plane["MeshRenderer"])
+    assert ours[3][1].split("\n", 1)[1] == (
+        f"{collider}:\n  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {{fileID: 0}}\n"
+        "  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n"
+        + re.search(r"  m_GameObject: .*\n", ours[3][1]).group(0)  # type: ignore[union-attr]
+        + _COLLIDER_HEAD
+        + shape_fields
+    )
+    check = _apply(project, (project / "robot.yaml").read_text()[len(HEADER) :], "--check")
+    assert check.code == 0, check.out
+
+
+def test_a_primitives_collider_keeps_the_values_set_on_it_after_unity_fitted_them(project):
+    body = "objects:\n  - {path: Pipe, primitive: cylinder}\n"
+    assert _apply(project, body).code == 0
+    scene = _scene_path(project)
+    # Set in Unity's Inspector: the fitted values are where it starts, not what apply keeps.
+    scene.write_text(scene.read_text().replace("m_Radius: 0.5000001", "m_Radius: 0.25"))
+    check = _apply(project, body, "--check")
+    assert check.code == 0, check.out
+    assert "m_Radius: 0.25\n" in scene.read_text()
 
 
 def test_a_cube_is_the_cube_unity_2022_3_made_its_material_named_by_path(project):
@@ -175,14 +251,14 @@ def test_mesh_components_declared_alone_take_built_in_and_project_assets(project
 
 
 BAD = [
-    ("objects:\n  - {path: Ball, primitive: sphere}\n", "robot.yaml:6:",
-     "a sphere primitive is not made yet"),
+    ("objects:\n  - {path: Ball, primitive: cone}\n", "robot.yaml:6:",
+     "expected one of: capsule, cube, cylinder, plane, quad, sphere"),
     ("objects:\n  - {path: Ball, primitive: Plane}\n", "robot.yaml:6:", "did you mean 'plane'?"),
     ("objects:\n  - path: Ball\n    primitive: cube\n    components:\n"
      "      - {type: MeshFilter, fields: {m_Mesh: Sphere}}\n", "robot.yaml:9:", "m_Mesh of a cube"),
     ("objects:\n  - path: P\n    components:\n"
-     "      - {type: MeshFilter, fields: {m_Mesh: Capsule}}\n",
-     "robot.yaml:8:", "m_Mesh expects Mesh assets, not 'Capsule'"),
+     "      - {type: MeshFilter, fields: {m_Mesh: Cone}}\n",
+     "robot.yaml:8:", "m_Mesh expects Mesh assets, not 'Cone'"),
     ("objects:\n  - path: P\n    components:\n"
      "      - {type: MeshFilter, fields: {m_Mesh: Assets/None.asset}}\n",
      "robot.yaml:8:", "no file Assets/None.asset in the project"),
@@ -234,4 +310,43 @@ def test_an_asset_without_a_meta_or_of_another_class_is_refused(project):
 
 def test_the_manifest_offers_exactly_the_primitives_the_unity_stage_makes():
     assert set(_keys.PRIMITIVE_NAMES) == set(builtins.PRIMITIVES)
-    assert set(_keys.UNCHECKED_PRIMITIVE_NAMES) == set(builtins.UNCHECKED_PRIMITIVES)
+    assert {p.mesh for p in builtins.PRIMITIVES.values()} == set(builtins.BUILTIN_MESHES)
+
+
+def test_a_new_mesh_collider_takes_the_mesh_filters_mesh_as_the_editor_gives_it(project):
+    # Unity's editor sets a MeshCollider added to an object to its MeshFilter's mesh: from the
+    # entry's MeshFilter (declared after it, even), or from the one the scene already has.
+    run = _apply(
+        project,
+        "objects:\n  - path: Part\n    components:\n      - MeshCollider\n"
+        "      - {type: MeshFilter, fields: {m_Mesh: Capsule}}\n  - path: Ball\n"
+        "    components: [{type: MeshFilter, fields: {m_Mesh: Sphere}}]\n",
+    )
+    assert run.code == 0, run.err
+    capsule = "  m_Mesh: {fileID: 10208, guid: 0000000000000000e000000000000000, type: 0}\n"
+    assert capsule in dict(_our_object(project, "Part"))["MeshCollider"]
+    # Ball's MeshFilter, no longer declared, stays in the scene with its mesh.
+    body = (project / "robot.yaml").read_text()[len(HEADER) :]
+    run = _apply(
+        project, body.replace("[{type: MeshFilter, fields: {m_Mesh: Sphere}}]", "[MeshCollider]")
+    )
+    assert run.code == 0, run.err
+    sphere = "  m_Mesh: {fileID: 10207, guid: 0000000000000000e000000000000000, type: 0}\n"
+    assert sphere in dict(_our_object(project, "Ball"))["MeshCollider"]
+
+
+def test_an_existing_mesh_collider_keeps_its_mesh_and_a_declared_one_wins(project):
+    body = (
+        "objects:\n  - path: Part\n    components:\n"
+        "      - {type: MeshFilter, fields: {m_Mesh: Cube}}\n"
+        "      - {type: MeshCollider, fields: {m_Mesh: Sphere}}\n"
+    )
+    assert _apply(project, body).code == 0
+    sphere = "  m_Mesh: {fileID: 10207, guid: 0000000000000000e000000000000000, type: 0}\n"
+    assert sphere in dict(_our_object(project, "Part"))["MeshCollider"]
+    scene = _scene_path(project)
+    # Emptied in Unity: the mesh is given once, to a new collider, and not forced after.
+    scene.write_text(scene.read_text().replace(sphere, "  m_Mesh: {fileID: 0}\n"))
+    unset = body.replace("{type: MeshCollider, fields: {m_Mesh: Sphere}}", "MeshCollider")
+    check = _apply(project, unset, "--check")
+    assert check.code == 0, check.out

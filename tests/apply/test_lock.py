@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from helpers import run_cli, snapshot
 
-from unityscaffold.apply._lock import LockComponent, LockFile, LockRobot, lock_path
+from unityscaffold.apply._lock import LockComponent, LockFile, LockPrimitive, LockRobot, lock_path
 from unityscaffold.errors import UserError
 
 
@@ -85,6 +85,26 @@ def test_adopted_robot_slots_are_listed_only_when_there_are_some_and_read_back(t
     journal = LockFile(robots=(LockRobot("Assets/S.unity", "r2d2", (4,), (("x Mesh", 4),)),))
     recovered = read.recovered(journal, tmp_path)
     assert recovered.robot_adopted("Assets/S.unity", "r2d2") == {**dict(slots), "x Mesh": 4}
+
+
+def test_primitives_are_listed_only_when_there_are_some_and_a_journal_merges_over(tmp_path):
+    path = tmp_path / "robot.lock.json"
+    assert '"primitives"' not in LockFile().render()
+    cube = LockPrimitive("Assets/S.unity", "Ball", "cube", (9, 3, 5))
+    lock = LockFile(primitives=(cube,))
+    assert '"primitives": {\n    "Assets/S.unity": {\n      "Ball": {\n        "shape": "cube"' in (
+        lock.render()
+    )
+    path.write_text(lock.render())
+    assert LockFile.read(path).primitives == (
+        LockPrimitive("Assets/S.unity", "Ball", "cube", (3, 5, 9)),
+    )
+    # An interrupted run that made Ball a sphere: its shape, and what either run made.
+    sphere = LockFile(primitives=(LockPrimitive("Assets/S.unity", "Ball", "sphere", (3, 5, 7)),))
+    merged = LockFile.read(path).recovered(sphere, tmp_path)
+    assert merged.primitives_in("Assets/S.unity") == {
+        "Ball": LockPrimitive("Assets/S.unity", "Ball", "sphere", (3, 5, 7, 9))
+    }
 
 
 def test_a_missing_lock_is_empty(tmp_path):
@@ -199,6 +219,15 @@ def _components(*items: str) -> str:
         (
             _lock(_components(), '"adopted": {"Assets/S.unity": {"r2d2": [1]}}'),
             'adopted["Assets/S.unity"]["r2d2"] should be an object, found a list',
+        ),
+        (
+            _lock(_components(), '"primitives": {"Assets/S.unity": {"Ball": {"shape": "cube"}}}'),
+            'primitives["Assets/S.unity"]["Ball"].file_ids should be a list of fileIDs, found '
+            "nothing",
+        ),
+        (
+            _lock(_components(), '"primitives": {"Assets/S.unity": {"Ball": {"file_ids": []}}}'),
+            'primitives["Assets/S.unity"]["Ball"].shape should be a string, found nothing',
         ),
         (_lock(_components(), '"kept": {}'), "kept should be a list, found an object"),
         (_lock(_components(), '"kept": [3]'), "kept[0] should be a string, found the number 3"),

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._identity import Moved
-from unityscaffold.apply._lock import LockComponent, LockRobot
+from unityscaffold.apply._lock import LockComponent, LockPrimitive, LockRobot
 from unityscaffold.apply._robot_owned import RobotFields
 from unityscaffold.errors import SourceLocation, UserError, located_at
 from unityscaffold.unity import (
@@ -41,6 +41,7 @@ class ScenePlan:
     gameobjects: dict[str, int] = field(default_factory=dict)  # path -> fileID, for the lock
     followed: list[Moved] = field(default_factory=list)  # manifest paths to rewrite
     robots: list[LockRobot] = field(default_factory=list)  # what apply made for each robot
+    primitives: list[LockPrimitive] = field(default_factory=list)  # what each primitive made
     # robot -> objects an earlier apply made that stay while something else is on them
     robot_leftovers: dict[str, dict[int, str]] = field(default_factory=dict)
 

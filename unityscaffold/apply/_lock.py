@@ -3,7 +3,8 @@
 It records every generated file with the sha256 of what apply wrote (so a hand edit can be told
 from an outdated file), the user files apply created (so an untouched one can be removed with
 its script), the scene components apply attached (so they can be pruned when the manifest
-drops them), and the fileIDs of those components and of the GameObjects apply made or adopted.
+drops them), the fileIDs of those components and of the GameObjects apply made or adopted, and
+the built-in components an object's ``primitive`` made (so a new shape can replace them).
 The fileIDs are the objects' identity: a GameObject renamed or re-parented in Unity keeps its
 fileID, so apply can tell it moved instead of creating a second one under the old name. Paths
 are relative to the Unity project, so the lock survives moving the project.
@@ -34,6 +35,7 @@ __all__ = [
     "LockComponent",
     "LockFile",
     "LockGameObject",
+    "LockPrimitive",
     "LockRobot",
     "journal_path",
     "lock_path",
@@ -101,6 +103,17 @@ class LockRobot:
     gameobject: str
     file_ids: tuple[int, ...]
     adopted: tuple[tuple[str, int], ...] = ()
+
+
+@dataclass(frozen=True, slots=True, order=True)
+class LockPrimitive:
+    """An object's ``primitive`` as apply last made it: the shape, and the fileIDs of the
+    components apply added for it (not those it found there, which stay the user's)."""
+
+    scene: str
+    gameobject: str  # the object's manifest path
+    shape: str
+    file_ids: tuple[int, ...]
 
 
 class _Malformed(Exception):
@@ -237,6 +250,25 @@ def _adopted(data: dict[str, object]) -> dict[tuple[str, str], tuple[tuple[str, 
     return found
 
 
+def _primitives(data: dict[str, object]) -> tuple[LockPrimitive, ...]:
+    scenes = _object(data.get("primitives", {}), "primitives")
+    found = []
+    for scene, objects in scenes.items():
+        shown = json.dumps(scene, ensure_ascii=False)
+        if not _inside_assets(scene):
+            raise _Malformed(f"primitives has the key {shown}, which is not {_INSIDE_ASSETS}")
+        for path, made in _object(objects, f"primitives[{shown}]").items():
+            where = f"primitives[{shown}][{json.dumps(path, ensure_ascii=False)}]"
+            item = _object(made, where)
+            shape = _string(item.get("shape", _MISSING), f"{where}.shape")
+            ids = item.get("file_ids", _MISSING)
+            if not isinstance(ids, list):
+                raise _wrong(f"{where}.file_ids", "a list of fileIDs", ids)
+            file_ids = tuple(_file_id(i, f"{where}.file_ids[{n}]") for n, i in enumerate(ids))
+            found.append(LockPrimitive(scene, path, shape, file_ids))
+    return tuple(found)
+
+
 def _kept(data: dict[str, object]) -> frozenset[str]:
     entries = data.get("kept", [])
     if not isinstance(entries, list):
@@ -271,6 +303,7 @@ def _parse(text: str) -> LockFile:
         _kept(data),
         _robots(data),
         _folders(data),
+        _primitives(data),
     )
 
 
@@ -283,6 +316,12 @@ class LockFile:
     kept: frozenset[str] = frozenset()  # files kept as edited by hand, and told so
     robots: tuple[LockRobot, ...] = ()
     folders: frozenset[str] = frozenset()  # asset folders apply made for robots
+
+    primitives: tuple[LockPrimitive, ...] = ()
+
+    def primitives_in(self, scene: str) -> dict[str, LockPrimitive]:
+        """Object path -> its primitive as apply last made it, in ``scene``."""
+        return {p.gameobject: p for p in self.primitives if p.scene == scene}
 
     def robot_ids(self, scene: str, gameobject: str) -> frozenset[int]:
         """The fileIDs apply made for the robot at ``gameobject`` in ``scene``."""
@@ -337,7 +376,8 @@ class LockFile:
 
         A file known to both keeps the digest its content matches (the journal's when neither
         does: then it was edited by hand either way); components and GameObjects are the union,
-        so the next run prunes what the interrupted one added and the manifest no longer wants.
+        so the next run prunes what the interrupted one added and the manifest no longer wants;
+        a primitive has the journal's shape and what either made.
         """
 
         def merge(old: dict[str, str], new: dict[str, str]) -> dict[str, str]:
@@ -383,6 +423,7 @@ class LockFile:
                 )
             ),
             self.folders | journal.folders,
+            _merged_primitives(self.primitives, journal.primitives),
         )
 
     def render(self) -> str:
@@ -411,6 +452,7 @@ class LockFile:
             **({"robots": robots} if (robots := self._rendered_robots()) else {}),
             **({"adopted": adopted} if (adopted := self._rendered_adopted()) else {}),
             **({"folders": sorted(self.folders)} if self.folders else {}),
+            **({"primitives": made} if (made := self._rendered_primitives()) else {}),
         }
         return json.dumps(data, indent=2, sort_keys=False, ensure_ascii=False) + "\n"
 
@@ -431,3 +473,27 @@ class LockFile:
             if slots:
                 found.setdefault(scene, {})[robot] = dict(sorted(slots.items()))
         return found
+
+    def _rendered_primitives(self) -> dict[str, dict[str, dict[str, object]]]:
+        """Scene -> object path -> shape and fileIDs; only when there are any, so locks without
+        primitives read as they did before."""
+        found: dict[str, dict[str, dict[str, object]]] = {}
+        for p in sorted(set(self.primitives)):
+            made: dict[str, object] = {"shape": p.shape, "file_ids": sorted(p.file_ids)}
+            found.setdefault(p.scene, {})[p.gameobject] = made
+        return found
+
+
+def _merged_primitives(
+    old: tuple[LockPrimitive, ...], new: tuple[LockPrimitive, ...]
+) -> tuple[LockPrimitive, ...]:
+    """The journal's primitives over the lock's: its shape, and the fileIDs of both (what the
+    interrupted run made may or may not have reached the scene)."""
+    merged = {(p.scene, p.gameobject): p for p in old}
+    for p in new:
+        before = merged.get((p.scene, p.gameobject))
+        ids = set(p.file_ids) | set(before.file_ids if before else ())
+        merged[(p.scene, p.gameobject)] = LockPrimitive(
+            p.scene, p.gameobject, p.shape, tuple(sorted(ids))
+        )
+    return tuple(sorted(merged.values()))

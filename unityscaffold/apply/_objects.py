@@ -3,26 +3,46 @@
 Objects go first (parents before children), so that every other entry, and every ``@Path`` a
 field refers to, finds them. Only what an entry writes is enforced; the rest stays as the scene
 has it. Built-in components' reference fields are set in a pass of their own, once every
-component of the scene exists (``set_builtin_references``).
+component of the scene exists (``set_builtin_references``). A ``primitive``'s components come
+first (``_primitives``), and the lock's record of what it made lets a new shape replace them.
 """
 
 from __future__ import annotations
 
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from unityscaffold.apply._assets import asset_value
-from unityscaffold.apply._primitives import primitive_components
+from unityscaffold.apply._context import SceneContext
+from unityscaffold.apply._editor import SceneEditor
+from unityscaffold.apply._lock import LockFile, LockPrimitive
+from unityscaffold.apply._primitives import (
+    declared_components,
+    filter_mesh,
+    primitive_components,
+    remove_replaced,
+    restarted_ids,
+    start_component,
+)
+from unityscaffold.apply._references import typed_reference
+from unityscaffold.apply._robots import refuse_reshaped_robot_objects
 from unityscaffold.apply._typed import Resolver, check_names, typed_value
-from unityscaffold.errors import LocatedError, UserError, located_at
-from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
+from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
+from unityscaffold.manifest.model import BuiltinComponent, ObjectPath, RectLayout, SceneObject
 from unityscaffold.unity import AssetRef, FieldValue, GameObject, InlineMap, SceneDocument
 from unityscaffold.unity.builtins import BUILTIN_TAGS, builtin_class
 from unityscaffold.unity.rotation import euler_to_quaternion
 
-__all__ = ["DeclaredObjects", "Hooks", "declare_objects", "project_tags", "set_builtin_references"]
+__all__ = [
+    "DeclaredObjects",
+    "Hooks",
+    "declare_objects",
+    "declare_scene_objects",
+    "project_tags",
+    "set_builtin_references",
+]
 
 _RECT_TRANSFORM = 224
 _TAGS_RE = re.compile(r"^  tags:\n((?:  - .*\n)*)", re.M)
@@ -146,21 +166,20 @@ def _builtin_values(
     return values
 
 
-def _declared_components(item: SceneObject) -> tuple[BuiltinComponent, ...]:
-    """The primitive's components (first, as Unity's menu adds them), then the entry's."""
-    return (*primitive_components(item), *item.components)
-
-
 @dataclass(frozen=True, slots=True)
 class Hooks:
     """What the scene editor lends: where a named object is now (renames followed), a record of
-    the objects used (for the lock's identities), the reference resolver, and the assets this
-    apply writes by path (a robot's materials, whose ``.meta`` may not be on disk yet)."""
+    the objects used (for the lock's identities), the reference resolver, the assets this
+    apply writes by path (a robot's materials, whose ``.meta`` may not be on disk yet), and
+    the primitives by object path as the lock has them (``made`` collects this run's)."""
 
     now: Callable[[str], str]
     record: Callable[[GameObject], None]
     resolve: Resolver
     assets: Mapping[str, AssetRef]
+    scene: str = ""
+    primitives: Mapping[str, LockPrimitive] = field(default_factory=dict)
+    made: list[LockPrimitive] = field(default_factory=list)
 
 
 @dataclass(frozen=True, slots=True)
@@ -171,6 +190,30 @@ class DeclaredObjects:
     edits: list[str]
     hooks: Hooks
     project_root: Path
+
+
+def declare_scene_objects(
+    ctx: SceneContext, editor: SceneEditor, lock: LockFile
+) -> DeclaredObjects | None:
+    """The manifest's ``objects:`` in this scene, created or kept as declared (their built-in
+    components' references are left for ``set_builtin_references``); what their primitives
+    made goes to the scene plan, for the lock."""
+    scene = editor.plan.relative
+    objects = [o for o in ctx.manifest.objects if o.scene == scene]
+    if not objects:
+        return None
+    refuse_reshaped_robot_objects(editor, objects)
+
+    def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
+        return typed_reference(ctx, editor, path, declared, where)
+
+    primitives = lock.primitives_in(scene)
+    hooks = Hooks(editor.path, editor.record, resolve, ctx.robot_assets(), scene, primitives)
+    declared = declare_objects(
+        editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks
+    )
+    editor.plan.primitives += hooks.made
+    return declared
 
 
 def declare_objects(
@@ -201,15 +244,41 @@ def declare_objects(
                 doc.set_fields(go.transform_id, _transform_fields(item, stored))
             if doc.revision != revision and not created:
                 edits.append(f"update object {item.path}")
-        for comp in _declared_components(item):
+        _make_primitive(doc, item, go, hooks, edits, project_root)
+        for comp in item.components:
             _ensure(doc, item, comp, hooks, edits, project_root, references=False)
     return DeclaredObjects(tuple(ordered), edits, hooks, project_root)
+
+
+def _make_primitive(
+    doc: SceneDocument,
+    item: SceneObject,
+    go: GameObject,
+    hooks: Hooks,
+    edits: list[str],
+    project_root: Path,
+) -> None:
+    """``item``'s primitive: what an earlier shape made and this one does not removed, then
+    this shape's components; the ones apply added (now or before) recorded for the lock."""
+    if item.primitive is None:
+        return
+    recorded = hooks.primitives.get(item.path)
+    with located_at(item.locations.of("primitive")):
+        edits += remove_replaced(doc, go, item, recorded)
+    earlier = frozenset(recorded.file_ids) if recorded else frozenset()
+    restart = restarted_ids(item, recorded)
+    made = []
+    for comp in primitive_components(item):
+        file_id, added = _ensure(doc, item, comp, hooks, edits, project_root, False, restart)
+        if added or file_id in earlier:
+            made.append(file_id)
+    hooks.made.append(LockPrimitive(hooks.scene, item.path, item.primitive, tuple(sorted(made))))
 
 
 def set_builtin_references(doc: SceneDocument, declared: DeclaredObjects) -> None:
     """The declared built-in components' reference fields, in a pass of their own."""
     for item in declared.ordered:
-        for comp in _declared_components(item):
+        for comp in declared_components(item):
             _ensure(doc, item, comp, declared.hooks, declared.edits, declared.project_root, True)
 
 
@@ -221,21 +290,41 @@ def _ensure(
     edits: list[str],
     project_root: Path,
     references: bool,
-) -> None:
+    restart: frozenset[int] = frozenset(),
+) -> tuple[int, bool]:
     """One built-in component with its plain values (or only its references): one line for
-    it, whichever pass adds or changes it."""
+    it, whichever pass adds or changes it. A new one (or one in ``restart``) starts from what
+    Unity's editor would give it. Its fileID, and whether it was added."""
     builtin = builtin_class(comp.type)
     assert builtin is not None  # the manifest accepts only supported classes
     with located_at(comp.location):
         values = _builtin_values(comp, references, hooks, project_root)
-        if references and not values:
-            return
         go = hooks.now(item.path)
-        existed = doc.find_builtin(go, builtin, comp.key) is not None
+        found = doc.find_builtin(go, builtin, comp.key)
+        if references and not values:
+            return (found.file_id if found else 0), False
+        if not references and (found is None or found.file_id in restart):
+            values = _start_values(doc, item, comp, hooks, project_root) + values
         revision = doc.revision
-        doc.ensure_builtin(go, builtin, comp.key, values)
+        file_id = doc.ensure_builtin(go, builtin, comp.key, values).file_id
     added, updated = f"add {comp.type} to {item.path}", f"update {comp.type} on {item.path}"
-    if not existed:
+    if found is None:
         edits.append(added)
     elif doc.revision != revision and added not in edits and updated not in edits:
         edits.append(updated)
+    return file_id, found is None
+
+
+def _start_values(
+    doc: SceneDocument, item: SceneObject, comp: BuiltinComponent, hooks: Hooks, root: Path
+) -> list[tuple[str, FieldValue]]:
+    """What Unity's editor gives a new ``comp``: a primitive's collider the values fitted to
+    its mesh; a MeshCollider whose mesh the entry leaves out, the MeshFilter's mesh."""
+    start = start_component(item, comp)
+    if start is not None:
+        return _builtin_values(start, False, hooks, root)
+    if comp.type == "MeshCollider" and all(f.name != "m_Mesh" for f in comp.fields):
+        go = doc.find_gameobject(hooks.now(item.path))
+        mesh = filter_mesh(doc, go, item, root, hooks.assets)
+        return [("m_Mesh", mesh)] if mesh is not None else []
+    return []

@@ -22,17 +22,11 @@ from unityscaffold.apply._editor import SceneEditor, ScenePlan
 from unityscaffold.apply._facts import ScriptFacts
 from unityscaffold.apply._identity import moved_objects, now_at, recorded_now
 from unityscaffold.apply._lock import LockFile
-from unityscaffold.apply._objects import (
-    DeclaredObjects,
-    Hooks,
-    declare_objects,
-    set_builtin_references,
-)
+from unityscaffold.apply._objects import declare_scene_objects, set_builtin_references
 from unityscaffold.apply._order import order_objects
-from unityscaffold.apply._references import typed_reference
 from unityscaffold.apply._renames import follow
 from unityscaffold.apply._robot_plan import PlannedRobot
-from unityscaffold.apply._robots import place_robots, refuse_reshaped_robot_objects, remove_kept
+from unityscaffold.apply._robots import place_robots, remove_kept
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._target import target_for
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
@@ -41,7 +35,6 @@ from unityscaffold.manifest.model import (
     Component,
     Connector,
     Manifest,
-    ObjectPath,
     SceneObject,
     Service,
     Topic,
@@ -51,7 +44,6 @@ from unityscaffold.unity import (
     SceneDocument,
 )
 from unityscaffold.unity.project import ScriptInfo
-from unityscaffold.unity.values import FieldValue
 
 __all__ = ["ScenePlan", "plan_scenes"]
 
@@ -78,7 +70,7 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
             slot = (editor.path(c.gameobject), ref.guid, ref.file_id)
             editor.keys.setdefault(slot, []).append(c.key)
     place_robots(ctx, editor, ctx.robots, lock)
-    objects = _declare_objects(ctx, editor)
+    objects = declare_scene_objects(ctx, editor, lock)
     target = target_for(m)
     needs_connector = [
         c
@@ -104,21 +96,6 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
     _prune_gameobjects(plan, doc, lock)
     objects_here = [o for o in m.objects if o.scene == plan.relative]
     order_objects(doc, objects_here, editor.path, plan.edits)
-
-
-def _declare_objects(ctx: SceneContext, editor: SceneEditor) -> DeclaredObjects | None:
-    """The manifest's ``objects:`` in this scene, created or kept as declared (their built-in
-    components' references are left for ``set_builtin_references``)."""
-    objects = [o for o in ctx.manifest.objects if o.scene == editor.plan.relative]
-    if not objects:
-        return None
-    refuse_reshaped_robot_objects(editor, objects)
-
-    def resolve(path: ObjectPath, declared: str, where: SourceLocation) -> FieldValue:
-        return typed_reference(ctx, editor, path, declared, where)
-
-    hooks = Hooks(editor.path, editor.record, resolve, ctx.robot_assets())
-    return declare_objects(editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks)
 
 
 def _prune_gameobjects(plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:

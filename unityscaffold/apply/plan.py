@@ -189,6 +189,7 @@ def make_plan(
         kept=frozenset(pruning.kept_files) | frozenset(pruning.kept_user_files),
         robots=tuple(sorted(r for s in scenes for r in s.robots)),
         folders=_robot_folders(robots, lock, project, deletions),
+        primitives=tuple(sorted(p for s in scenes for p in s.primitives)),
     )
     check_inside(project, [d.path for d in desired] + deletions)
     # Beside the manifest, outside the project: the lock's and the journal's temporary files,

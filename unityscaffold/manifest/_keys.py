@@ -57,10 +57,9 @@ BUILTIN_TYPES = (
     "Rigidbody",
     "SphereCollider",
 )
-#: The shapes an object may be made as (``unity/builtins.py``'s PRIMITIVES, kept equal by a
-#: test), and Unity's others, which apply refuses until a Unity-written example checks them.
-PRIMITIVE_NAMES = ("cube", "plane")
-UNCHECKED_PRIMITIVE_NAMES = ("capsule", "cylinder", "quad", "sphere")
+#: The shapes an object may be made as, the six of Unity's GameObject > 3D Object menu
+#: (``unity/builtins.py``'s PRIMITIVES, kept equal by a test).
+PRIMITIVE_NAMES = ("capsule", "cube", "cylinder", "plane", "quad", "sphere")
 LAYER_NUMBERS = {"Default": 0, "TransparentFX": 1, "Ignore Raycast": 2, "Water": 4, "UI": 5}
 BUILTIN_LAYERS = list(LAYER_NUMBERS)
 

@@ -7,7 +7,7 @@ import math
 from unityscaffold.manifest import _spec as spec
 from unityscaffold.manifest._entries import Context, locations, read_scene
 from unityscaffold.manifest._fields import read_fields
-from unityscaffold.manifest._keys import PRIMITIVE_NAMES, UNCHECKED_PRIMITIVE_NAMES
+from unityscaffold.manifest._keys import PRIMITIVE_NAMES
 from unityscaffold.manifest._read import Reader, one_of, suggest
 from unityscaffold.manifest._yaml import YMap, YNode, YScalar, YSeq
 from unityscaffold.manifest.model import BuiltinComponent, RectLayout, SceneObject
@@ -58,16 +58,6 @@ def _primitive(r: Reader, m: YMap, components: tuple[BuiltinComponent, ...]) -> 
                     hint="leave out `primitive` to give the MeshFilter a mesh of your own",
                 )
         return str(value)
-    if value in UNCHECKED_PRIMITIVE_NAMES:
-        r.error(
-            entry.value.location,
-            f"a {value} primitive is not made yet: Unity fits its collider to the "
-            "mesh, and no file Unity wrote has been checked for the values it gets",
-            expected=one_of(PRIMITIVE_NAMES),
-            hint="make it in Unity (GameObject > 3D Object), or declare its MeshFilter, "
-            "MeshRenderer and collider under `components`",
-        )
-        return None
     word = value if isinstance(value, str) else ""
     r.invalid(
         entry,

@@ -108,7 +108,8 @@ OBJECT = Section(
         Key(
             "primitive",
             "Make it the shape Unity's GameObject > 3D Object menu makes: "
-            + " or ".join(f"`{name}`" for name in PRIMITIVE_NAMES)
+            + ", ".join(f"`{name}`" for name in PRIMITIVE_NAMES[:-1])
+            + f" or `{PRIMITIVE_NAMES[-1]}`"
             + " (a MeshFilter with the built-in mesh, a MeshRenderer with Default-Material, "
             "and the collider). `components` may set their fields.",
             {"enum": list(PRIMITIVE_NAMES)},

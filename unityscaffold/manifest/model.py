@@ -305,7 +305,7 @@ class SceneObject:
     components: tuple[BuiltinComponent, ...]
     locations: Locations
     sibling_index: int | None = None  # its place among its parent's children or the roots
-    primitive: str | None = None  # "plane", "cube": what the 3D Object menu adds
+    primitive: str | None = None  # "cube", "sphere", ...: what the 3D Object menu adds
 
 
 @dataclass(frozen=True, slots=True)

@@ -38,10 +38,10 @@ components:
 ${component_example}
 
 # GameObjects created if missing and kept as written: position, rotation (Euler degrees),
-# scale, active, tag, layer, ui (RectTransform), primitive (plane, cube: as Unity's
-# GameObject > 3D Object menu makes it) and built-in components (Camera, Light, Rigidbody,
-# Box/Sphere/Capsule/MeshCollider, MeshFilter, MeshRenderer, Canvas, CanvasRenderer,
-# AudioListener).
+# scale, active, tag, layer, ui (RectTransform), primitive (cube, sphere, capsule, cylinder,
+# plane, quad: as Unity's GameObject > 3D Object menu makes it) and built-in components
+# (Camera, Light, Rigidbody, Box/Sphere/Capsule/MeshCollider, MeshFilter, MeshRenderer,
+# Canvas, CanvasRenderer, AudioListener).
 objects:
 #  - path: Robot/base_link
 #    position: [0, 0.1, 0]

@@ -22,7 +22,6 @@ from unityscaffold.unity._builtin_meshes import (
     MESH_COLLIDER_SHAPE,
     MESH_LAYOUTS,
     PRIMITIVES,
-    UNCHECKED_PRIMITIVES,
     Primitive,
 )
 from unityscaffold.unity._joint_layouts import JOINT_LAYOUTS
@@ -35,7 +34,6 @@ __all__ = [
     "BUILTIN_TAGS",
     "BUILTIN_TYPES",
     "PRIMITIVES",
-    "UNCHECKED_PRIMITIVES",
     "BuiltinClass",
     "Primitive",
     "builtin_class",
