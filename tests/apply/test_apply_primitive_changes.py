@@ -86,6 +86,14 @@ def test_a_new_shape_replaces_the_old_shapes_collider(project):
     assert made == {"shape": "sphere", "file_ids": sorted(i for _, i, _ in after[1:])}
 
 
+def test_a_plane_made_a_cube_loses_its_mesh_collider(project):
+    assert _apply(project, "objects:\n  - {path: Floor, primitive: plane}\n").code == 0
+    run = _apply(project, "objects:\n  - {path: Floor, primitive: cube}\n")
+    assert run.code == 0, run.err
+    classes = [c for c, _, _ in _components(project, "Floor")]
+    assert classes == ["Transform", "MeshFilter", "MeshRenderer", "BoxCollider"]
+
+
 def test_a_collider_both_shapes_make_stays_and_takes_the_new_shapes_values(project):
     assert _apply(project, "objects:\n  - {path: Pipe, primitive: cylinder}\n").code == 0
     (collider,) = [c for c in _components(project, "Pipe") if c[0] == "CapsuleCollider"]

@@ -319,12 +319,12 @@ def test_a_new_mesh_collider_takes_the_mesh_filters_mesh_as_the_editor_gives_it(
     run = _apply(
         project,
         "objects:\n  - path: Part\n    components:\n      - MeshCollider\n"
-        "      - {type: MeshFilter, fields: {m_Mesh: Capsule}}\n  - path: Ball\n"
+        "      - {type: MeshFilter, fields: {m_Mesh: Cylinder}}\n  - path: Ball\n"
         "    components: [{type: MeshFilter, fields: {m_Mesh: Sphere}}]\n",
     )
     assert run.code == 0, run.err
-    capsule = "  m_Mesh: {fileID: 10208, guid: 0000000000000000e000000000000000, type: 0}\n"
-    assert capsule in dict(_our_object(project, "Part"))["MeshCollider"]
+    cylinder = "  m_Mesh: {fileID: 10206, guid: 0000000000000000e000000000000000, type: 0}\n"
+    assert cylinder in dict(_our_object(project, "Part"))["MeshCollider"]
     # Ball's MeshFilter, no longer declared, stays in the scene with its mesh.
     body = (project / "robot.yaml").read_text()[len(HEADER) :]
     run = _apply(
