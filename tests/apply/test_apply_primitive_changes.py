@@ -132,3 +132,22 @@ def test_a_collider_found_on_the_object_before_its_primitive_stays_the_users(pro
     run = _apply(project, "objects:\n  - {path: Crate, primitive: sphere}\n")
     assert run.code == 0, run.err
     assert ("BoxCollider", by_hand) in [(c, i) for c, i, _ in _components(project, "Crate")]
+
+
+def test_a_collider_no_lock_records_is_kept_with_a_note(project):
+    # A cube made by an apply from before the lock recorded primitives.
+    assert _apply(project, "objects:\n  - {path: Ball, primitive: cube}\n").code == 0
+    lock = project / "robot.lock.json"
+    data = json.loads(lock.read_text())
+    del data["primitives"]
+    lock.write_text(json.dumps(data, indent=2) + "\n")
+    run = _apply(project, "objects:\n  - {path: Ball, primitive: sphere}\n")
+    assert run.code == 0, run.err
+    assert (
+        "note: Ball keeps its BoxCollider beside the sphere's SphereCollider: no lock records "
+        "that apply made it (remove it in Unity if an earlier primitive did)"
+    ) in run.out
+    classes = [c for c, _, _ in _components(project, "Ball")]
+    assert classes == ["Transform", "MeshFilter", "MeshRenderer", "BoxCollider", "SphereCollider"]
+    again = _apply(project, "objects:\n  - {path: Ball, primitive: sphere}\n")
+    assert again.code == 0 and "note:" not in again.out, again.out

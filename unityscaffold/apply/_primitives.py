@@ -12,7 +12,9 @@ The lock records the shape and the components apply added for it (``LockPrimitiv
 one it found on the object, which stays the user's. When the shape changes, what the old one
 added and the new one does not make (a cube's BoxCollider, for a sphere) is removed, unless a
 ``components`` entry of the object declares that class; a collider both make (a cylinder's and
-a capsule's CapsuleCollider) stays and gets the new shape's fitted values.
+a capsule's CapsuleCollider) stays and gets the new shape's fitted values. With no record (a lock
+from before primitives were recorded) nothing is removed: a note names the other collider kept.
+Dropping ``primitive`` keeps the components too: they become the user's.
 """
 
 from __future__ import annotations
@@ -82,11 +84,14 @@ def remove_replaced(
     doc: SceneDocument, go: GameObject, item: SceneObject, recorded: LockPrimitive | None
 ) -> list[str]:
     """Remove what ``item``'s earlier primitive added that its current one does not make and
-    no ``components`` entry declares; one line for each."""
-    if recorded is None or item.primitive is None or recorded.shape == item.primitive:
+    no ``components`` entry declares; one line for each. Without a record (a lock from before
+    primitives were recorded), another shape's collider is kept, with a note."""
+    if item.primitive is None or (recorded is not None and recorded.shape == item.primitive):
         return []
     making = {c.type for c in primitive_components(item)}
     declared = {c.type for c in item.components}
+    if recorded is None:
+        return _unrecorded_notes(doc, go, item, making | declared)
     edits = []
     for comp in doc.components_of(go):
         if comp.file_id not in recorded.file_ids or comp.type_name in making | declared:
@@ -97,6 +102,19 @@ def remove_replaced(
                 f"primitive made it; it is a {item.primitive} now)"
             )
     return edits
+
+
+def _unrecorded_notes(
+    doc: SceneDocument, go: GameObject, item: SceneObject, wanted: set[str]
+) -> list[str]:
+    colliders = {p.collider for p in PRIMITIVES.values()} - wanted
+    return [
+        f"note: {item.path} keeps its {comp.type_name} beside the {item.primitive}'s "
+        f"{PRIMITIVES[str(item.primitive)].collider}: no lock records that apply made it "
+        "(remove it in Unity if an earlier primitive did)"
+        for comp in doc.components_of(go)
+        if comp.type_name in colliders
+    ]
 
 
 def filter_mesh(
