@@ -11,7 +11,9 @@ from __future__ import annotations
 
 import json
 import shutil
+from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 from helpers import SYSTEM_PYTHON, run_cli
 
@@ -19,6 +21,7 @@ from tests.runtime.bridge import DATA, Bridge
 from tests.runtime.client import CSHARP, mcs_compile
 from tests.runtime.lines import Lines, start
 from tests.runtime.ros2 import Ros2, running_rosbridge2
+from tests.runtime.ros2_actions import DECIDED, lost_goal
 from tests.runtime.runtime_helpers import SAMPLE_INTERFACES, SAMPLE_ROS2_INTERFACES
 
 TIMEOUT = 60  # seconds; a guard against a hang only
@@ -186,17 +189,18 @@ def test_ros1_action_scripts_against_rospy_actionlib(
     assert "destroyed" in output and "Unhandled Exception" not in output, report
 
 
-def test_ros2_action_scripts_against_rclpy(
-    ros2: Ros2,
-    mcs: str,
-    mono: str,
-    rossharp_ros2_client: Path,
-    rossharp_package: Path,
-    tmp_path: Path,
-) -> None:
-    generated = _generated(tmp_path, 2)
-    exe = _build(mcs, rossharp_ros2_client, rossharp_package, generated, tmp_path / "bin", 2)
-    result = tmp_path / "node.json"
+@dataclass(frozen=True)
+class Ros2Run:
+    """One run of the ROS 2 scenario: what the rclpy node saw and everything printed."""
+
+    seen: dict[str, Any]
+    lines: list[str]
+    output: str
+    report: str
+
+
+def _run_ros2(ros2: Ros2, mono: str, exe: Path, result: Path) -> Ros2Run:
+    """The scenario against rclpy's node through a rosbridge 2.x of its own."""
     # rosbridge 2.x with its default (false) reads a client's cancel only after the goal ended:
     # the parameter apply's note names (README, limitations).
     with running_rosbridge2(
@@ -215,15 +219,52 @@ def test_ros2_action_scripts_against_rclpy(
             node_output = node.finish()
             output = scenario.finish() if scenario else ""
     assert result.exists(), node_output
-    seen = json.loads(result.read_text())
     report = f"{node_output}\n--- C#:\n{output}\n--- rosbridge:\n{bridge.log_text()[-3000:]}"
-    lines = output.splitlines()
+    return Ros2Run(json.loads(result.read_text()), output.splitlines(), output, report)
 
-    # The generated client -> rclpy's ActionServer: a goal that succeeds, one cancelled at its
-    # first feedback, one refused.
+
+def _lost_by_rosbridge(run: Ros2Run) -> str:
+    """The goal rosbridge 2.x lost in ``run`` (tests/runtime/ros2_actions.py), or ""."""
+    sent = [value.split(" ", 1)[0] for value in _values(run.lines, "client_sent")]
+    answered = {
+        value.split(" ", 1)[0]
+        for key in ("client_feedback", "client_result")
+        for value in _values(run.lines, key)
+    }
+    return lost_goal(sent, run.seen["server_decided"], answered)
+
+
+def test_ros2_action_scripts_against_rclpy(
+    ros2: Ros2,
+    mcs: str,
+    mono: str,
+    rossharp_ros2_client: Path,
+    rossharp_package: Path,
+    tmp_path: Path,
+) -> None:
+    generated = _generated(tmp_path, 2)
+    exe = _build(mcs, rossharp_ros2_client, rossharp_package, generated, tmp_path / "bin", 2)
+    run = _run_ros2(ros2, mono, exe, tmp_path / "node.json")
+    if lost := _lost_by_rosbridge(run):
+        # rosbridge 2.x sent this goal before its new action client had found the server, and it
+        # was lost (tests/runtime/ros2_actions.py): nothing else went wrong with the client's
+        # goals. The other half is checked on this run as well; then the scenario runs once
+        # more with a fresh bridge, and that run alone decides the client's half.
+        _check_ros2_server_half(run)
+        first = run.report
+        run = _run_ros2(ros2, mono, exe, tmp_path / "node-again.json")
+        run = replace(run, report=f"{run.report}\n--- the first run, which lost {lost}:\n{first}")
+    _check_ros2_client_half(run)
+    _check_ros2_server_half(run)
+
+
+def _check_ros2_client_half(run: Ros2Run) -> None:
+    """The generated client -> rclpy's ActionServer: a goal that succeeds, one cancelled at its
+    first feedback, one refused."""
+    seen, lines, report = run.seen, run.lines, run.report
     ids = _ids(lines)
     assert set(ids) == {"alpha", "cancel-me", "reject-me"}, report
-    assert seen["server_decided"] == [["alpha", True], ["cancel-me", True], ["reject-me", False]]
+    assert seen["server_decided"] == DECIDED, report
     assert seen["server"] == ["alpha", "cancel-me"], report
     assert seen["server_cancel"] == ["cancel-me"], report
     # As for ROS 1: feedback published just before its goal's result may come after it and is
@@ -244,8 +285,11 @@ def test_ros2_action_scripts_against_rclpy(
     warned = [line for line in lines if NO_ANSWER + ids["reject-me"] + " " in line]
     assert len(warned) == 1 and warned[0].startswith("[warning] DockPyActionClient"), report
 
-    # rclpy's ActionClient -> the generated server.
-    client = seen["client"]
+
+def _check_ros2_server_half(run: Ros2Run) -> None:
+    """rclpy's ActionClient -> the generated server; and the frame loop's thread."""
+    lines, output, report = run.lines, run.output, run.report
+    client = run.seen["client"]
     assert client["server_found"], report
     assert client["from-rclpy"] == {
         "accepted": True,

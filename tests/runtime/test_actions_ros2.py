@@ -8,14 +8,18 @@ cancelled (csharp/Ros2ActionProbe.cs), and a goal the rclpy server refuses."""
 
 from __future__ import annotations
 
+import contextlib
 import json
+from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 from processes import wait_for
 
 from tests.runtime.client import CSHARP, mcs_compile
 from tests.runtime.lines import start
 from tests.runtime.ros2 import Ros2, running_rosbridge2
+from tests.runtime.ros2_actions import DECIDED, lost_goal
 from tests.runtime.runtime_helpers import SAMPLE_ROS2_INTERFACES, write_code
 from unityscaffold.codegen import Options, generate
 from unityscaffold.interfaces.model import Dialect
@@ -49,11 +53,19 @@ def _values(lines: list[str], key: str) -> list[str]:
     return [line.split(" ", 1)[1] for line in lines if line.startswith(key + " ")]
 
 
-def test_ros2_actions_goal_feedback_result_cancel_both_ways(
-    ros2: Ros2, mcs: str, mono: str, rossharp_ros2_client: Path, tmp_path: Path
-) -> None:
-    exe = _build(mcs, rossharp_ros2_client, tmp_path / "src")
-    result = tmp_path / "node.json"
+@dataclass(frozen=True)
+class Ros2Run:
+    """One run of the probe against rclpy's node: what the node saw and everything printed."""
+
+    seen: dict[str, Any]
+    lines: list[str]
+    output: str
+    bridge_log: str
+    report: str
+
+
+def _run(ros2: Ros2, mono: str, exe: Path, result: Path) -> Ros2Run:
+    """The probe against rclpy's node through a rosbridge 2.x of its own."""
     # With rosbridge's default, a cancel would wait for its goal to end (README, limitations).
     with running_rosbridge2(
         ros2, rosapi=False, parameters={"send_action_goals_in_new_thread": "true"}
@@ -66,21 +78,55 @@ def test_ros2_actions_goal_feedback_result_cancel_both_ways(
             assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
             probe = start([mono, str(exe), bridge.url, "/dock_py", "/dock_cs"])
             node.wait_for(lambda line: line == "done", TIMEOUT + 30)
-            probe.wait_for(lambda line: line.endswith(" reject-me"), TIMEOUT)
-            wait_for("the refusal", lambda: REFUSED in bridge.log_text(), TIMEOUT, bridge.logs)
+            if probe.wait_for(lambda line: line.endswith(" reject-me"), TIMEOUT):
+                # A guard only: a refusal that never comes is for the checks to report.
+                with contextlib.suppress(RuntimeError):
+                    wait_for("the refusal", lambda: REFUSED in bridge.log_text(), TIMEOUT, [])
         finally:
             node_output = node.finish()
             output = probe.finish() if probe else ""
     assert result.exists(), node_output
-    seen = json.loads(result.read_text())
-    lines = output.splitlines()
-    report = f"{node_output}\n--- C#:\n{output}\n--- rosbridge:\n{bridge.log_text()[-3000:]}"
+    log = bridge.log_text()
+    report = f"{node_output}\n--- C#:\n{output}\n--- rosbridge:\n{log[-3000:]}"
+    return Ros2Run(json.loads(result.read_text()), output.splitlines(), output, log, report)
 
-    # C# client -> rclpy's server.
+
+def _lost_by_rosbridge(run: Ros2Run) -> str:
+    """The goal rosbridge 2.x lost in ``run`` (tests/runtime/ros2_actions.py), or ""."""
+    sent = dict(s.split(" ", 1) for s in _values(run.lines, "client_sent"))  # id -> dock_id
+    answered = {
+        sent.get(value.split(" ", 1)[0], "")
+        for key in ("client_feedback", "client_result")
+        for value in _values(run.lines, key)
+    }
+    return lost_goal(list(sent.values()), run.seen["server_decided"], answered)
+
+
+def test_ros2_actions_goal_feedback_result_cancel_both_ways(
+    ros2: Ros2, mcs: str, mono: str, rossharp_ros2_client: Path, tmp_path: Path
+) -> None:
+    exe = _build(mcs, rossharp_ros2_client, tmp_path / "src")
+    run = _run(ros2, mono, exe, tmp_path / "node.json")
+    if lost := _lost_by_rosbridge(run):
+        # rosbridge 2.x sent this goal before its new action client had found the server, and it
+        # was lost (tests/runtime/ros2_actions.py): nothing else went wrong with the client's
+        # goals. The other half is checked on this run as well; then the probe runs once more
+        # with a fresh bridge, and that run alone decides the client's half.
+        _check_server_half(run)
+        first = run.report
+        run = _run(ros2, mono, exe, tmp_path / "node-again.json")
+        run = replace(run, report=f"{run.report}\n--- the first run, which lost {lost}:\n{first}")
+    _check_client_half(run)
+    _check_server_half(run)
+
+
+def _check_client_half(run: Ros2Run) -> None:
+    """C# client -> rclpy's server."""
+    seen, lines, report = run.seen, run.lines, run.report
     sent = _values(lines, "client_sent")
     assert [s.split(" ", 1)[1] for s in sent] == ["alpha", "cancel-me", "reject-me"], report
     alpha, cancel_me, _ = (s.split(" ", 1)[0] for s in sent)
-    assert seen["server_decided"] == [["alpha", True], ["cancel-me", True], ["reject-me", False]]
+    assert seen["server_decided"] == DECIDED, report
     # Feedback and result come to rosbridge on separate channels in no set order, and ROS# drops
     # a goal's feedback that comes after its result: alpha's second one, published just before
     # its result, may be lost (README, limitations). cancel-me's comes first.
@@ -101,15 +147,18 @@ def test_ros2_actions_goal_feedback_result_cancel_both_ways(
     assert _values(lines, "client_cancel_response") == [], report
     # A refused goal: rosbridge 2.1.0 raises the refusal in a callback of its own, which rclpy
     # only logs, and sends the client nothing at all (README, limitations).
-    assert REFUSED in bridge.log_text(), report
+    assert REFUSED in run.bridge_log, report
     assert not any(line.startswith("Error in ConsumeResultResponse") for line in lines), report
 
-    # rclpy's client -> the C# server.
+
+def _check_server_half(run: Ros2Run) -> None:
+    """rclpy's client -> the C# server."""
+    lines, report = run.lines, run.report
     served = _values(lines, "server_goal")
     assert [s.split(" ")[-1] for s in served] == ["from-rclpy", "cancel-me"], report
     assert all(" /dock_cs diffbot_msgs/action/Dock True " in s for s in served), report
     assert len(_values(lines, "server_cancel")) == 1, report
-    client = seen["client"]
+    client = run.seen["client"]
     assert client["from-rclpy"] == {
         "accepted": True,
         "status": STATUS_SUCCEEDED,
@@ -122,4 +171,4 @@ def test_ros2_actions_goal_feedback_result_cancel_both_ways(
         "result": [False, -1.0],
     }, report
     assert client["feedback"] == {"from-rclpy": [3.5], "cancel-me": [3.5]}, report
-    assert "Unhandled Exception" not in output, report
+    assert "Unhandled Exception" not in run.output, report
