@@ -26,8 +26,15 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass, field
-from pathlib import Path, PurePosixPath
+from pathlib import Path
 
+from unityscaffold.apply._lock_read import LOCK_VERSION, Malformed, read_lock
+from unityscaffold.apply._lock_records import (
+    LockComponent,
+    LockGameObject,
+    LockPrimitive,
+    LockRobot,
+)
 from unityscaffold.errors import UserError
 
 __all__ = [
@@ -42,8 +49,6 @@ __all__ = [
     "recorded",
     "sha256",
 ]
-
-LOCK_VERSION = 1
 
 
 def sha256(data: bytes) -> str:
@@ -70,241 +75,6 @@ def journal_path(manifest: Path) -> Path:
     means that apply was interrupted, and the next run reads both (``LockFile.recovered``).
     """
     return manifest.with_name(f"{manifest.stem}.lock.pending.json")
-
-
-@dataclass(frozen=True, slots=True, order=True)
-class LockComponent:
-    """A component apply attached: scene, GameObject path and script GUID identify it."""
-
-    scene: str
-    gameobject: str
-    script: str
-    entry: str = ""  # the manifest entry that asked for it, e.g. "topic /odom"
-    file_id: int = 0  # the component's fileID in the scene; 0 in a lock from before they were
-
-
-@dataclass(frozen=True, slots=True, order=True)
-class LockGameObject:
-    """A GameObject apply made or adopted (an entry's GameObject or one on its path)."""
-
-    scene: str
-    path: str
-    file_id: int
-
-
-@dataclass(frozen=True, slots=True, order=True)
-class LockRobot:
-    """A robot apply imported: the fileIDs of every object it made for it in ``scene`` (so
-    what a changed URDF no longer has can be removed), and those it took over from a robot
-    imported by hand, by the import's slot (``"link[1]/visual[0] UrdfVisual#0"``), as they
-    cannot be derived from the slot as the others are."""
-
-    scene: str
-    gameobject: str
-    file_ids: tuple[int, ...]
-    adopted: tuple[tuple[str, int], ...] = ()
-
-
-@dataclass(frozen=True, slots=True, order=True)
-class LockPrimitive:
-    """An object's ``primitive`` as apply last made it: the shape, and the fileIDs of the
-    components apply added for it (not those it found there, which stay the user's)."""
-
-    scene: str
-    gameobject: str  # the object's manifest path
-    shape: str
-    file_ids: tuple[int, ...]
-
-
-class _Malformed(Exception):
-    """A part of the lock with the wrong shape, told by its JSON path.
-
-    Such as ``files["Assets/a.cs"] should be a sha256 string, found the number 1``.
-    """
-
-    def __init__(self, detail: str) -> None:
-        super().__init__(detail)
-        self.detail = detail
-
-
-_MISSING = object()  # a key the lock does not have
-
-
-def _wrong(where: str, expected: str, value: object) -> _Malformed:
-    return _Malformed(f"{where} should be {expected}, found {_describe(value)}")
-
-
-def _describe(value: object) -> str:
-    """A JSON value in the user's words, short enough for one line."""
-    if value is _MISSING:
-        return "nothing"
-    if value is None or isinstance(value, bool):
-        return json.dumps(value)
-    if isinstance(value, int | float):
-        return f"the number {value}"
-    if isinstance(value, str):
-        return "the string " + json.dumps(value, ensure_ascii=False)
-    return "a list" if isinstance(value, list) else "an object"
-
-
-def _object(value: object, where: str) -> dict[str, object]:
-    if not isinstance(value, dict):
-        raise _wrong(where, "an object", value)
-    return value
-
-
-def _string(value: object, where: str, expected: str = "a string") -> str:
-    if not isinstance(value, str):
-        raise _wrong(where, expected, value)
-    return value
-
-
-_INSIDE_ASSETS = "a path inside the project's Assets/ folder"
-
-
-def _inside_assets(path: str) -> bool:
-    """The lock decides what apply deletes and which scenes it edits, so a lock edited by hand
-    (or by a bad merge) must not be able to point outside ``Assets/``."""
-    parts = PurePosixPath(path).parts
-    return bool(parts) and parts[0] == "Assets" and ".." not in parts and "\\" not in path
-
-
-def _asset_map(data: dict[str, object], key: str) -> dict[str, str]:
-    entries = _object(data.get(key, _MISSING), key)
-    found = {}
-    for path, digest in entries.items():
-        shown = json.dumps(path, ensure_ascii=False)
-        if not _inside_assets(path):
-            raise _Malformed(f"{key} has the key {shown}, which is not {_INSIDE_ASSETS}")
-        found[path] = _string(digest, f"{key}[{shown}]", "a sha256 string")
-    return found
-
-
-def _file_id(value: object, where: str) -> int:
-    if type(value) is not int or not 0 < value < 1 << 63:
-        raise _wrong(where, "a fileID (a positive 64-bit integer)", value)
-    return value
-
-
-def _gameobjects(data: dict[str, object]) -> tuple[LockGameObject, ...]:
-    scenes = _object(data.get("gameobjects", {}), "gameobjects")
-    found = []
-    for scene, paths in scenes.items():
-        shown = json.dumps(scene, ensure_ascii=False)
-        if not _inside_assets(scene):
-            raise _Malformed(f"gameobjects has the key {shown}, which is not {_INSIDE_ASSETS}")
-        for path, file_id in _object(paths, f"gameobjects[{shown}]").items():
-            where = f"gameobjects[{shown}][{json.dumps(path, ensure_ascii=False)}]"
-            found.append(LockGameObject(scene, path, _file_id(file_id, where)))
-    return tuple(found)
-
-
-def _components(data: dict[str, object]) -> tuple[LockComponent, ...]:
-    entries = data.get("components", _MISSING)
-    if not isinstance(entries, list):
-        raise _wrong("components", "a list", entries)
-    found = []
-    for index, entry in enumerate(entries):
-        where = f"components[{index}]"
-        item = _object(entry, where)
-        scene, gameobject, script = (
-            _string(item.get(key, _MISSING), f"{where}.{key}")
-            for key in ("scene", "gameobject", "script")
-        )
-        entry_name = _string(item.get("entry", ""), f"{where}.entry")
-        file_id = _file_id(item["file_id"], f"{where}.file_id") if "file_id" in item else 0
-        if not _inside_assets(scene):
-            raise _wrong(f"{where}.scene", _INSIDE_ASSETS, scene)
-        found.append(LockComponent(scene, gameobject, script, entry_name, file_id))
-    return tuple(found)
-
-
-def _robots(data: dict[str, object]) -> tuple[LockRobot, ...]:
-    scenes = _object(data.get("robots", {}), "robots")
-    adopted = _adopted(data)
-    found = []
-    for scene, robots in scenes.items():
-        shown = json.dumps(scene, ensure_ascii=False)
-        if not _inside_assets(scene):
-            raise _Malformed(f"robots has the key {shown}, which is not {_INSIDE_ASSETS}")
-        for path, ids in _object(robots, f"robots[{shown}]").items():
-            where = f"robots[{shown}][{json.dumps(path, ensure_ascii=False)}]"
-            if not isinstance(ids, list):
-                raise _wrong(where, "a list of fileIDs", ids)
-            file_ids = tuple(_file_id(i, f"{where}[{n}]") for n, i in enumerate(ids))
-            found.append(LockRobot(scene, path, file_ids, adopted.get((scene, path), ())))
-    return tuple(found)
-
-
-def _adopted(data: dict[str, object]) -> dict[tuple[str, str], tuple[tuple[str, int], ...]]:
-    scenes = _object(data.get("adopted", {}), "adopted")
-    found = {}
-    for scene, robots in scenes.items():
-        shown = json.dumps(scene, ensure_ascii=False)
-        for path, slots in _object(robots, f"adopted[{shown}]").items():
-            where = f"adopted[{shown}][{json.dumps(path, ensure_ascii=False)}]"
-            found[(scene, path)] = tuple(
-                (slot, _file_id(i, f"{where}[{json.dumps(slot)}]"))
-                for slot, i in sorted(_object(slots, where).items())
-            )
-    return found
-
-
-def _primitives(data: dict[str, object]) -> tuple[LockPrimitive, ...]:
-    scenes = _object(data.get("primitives", {}), "primitives")
-    found = []
-    for scene, objects in scenes.items():
-        shown = json.dumps(scene, ensure_ascii=False)
-        if not _inside_assets(scene):
-            raise _Malformed(f"primitives has the key {shown}, which is not {_INSIDE_ASSETS}")
-        for path, made in _object(objects, f"primitives[{shown}]").items():
-            where = f"primitives[{shown}][{json.dumps(path, ensure_ascii=False)}]"
-            item = _object(made, where)
-            shape = _string(item.get("shape", _MISSING), f"{where}.shape")
-            ids = item.get("file_ids", _MISSING)
-            if not isinstance(ids, list):
-                raise _wrong(f"{where}.file_ids", "a list of fileIDs", ids)
-            file_ids = tuple(_file_id(i, f"{where}.file_ids[{n}]") for n, i in enumerate(ids))
-            found.append(LockPrimitive(scene, path, shape, file_ids))
-    return tuple(found)
-
-
-def _kept(data: dict[str, object]) -> frozenset[str]:
-    entries = data.get("kept", [])
-    if not isinstance(entries, list):
-        raise _wrong("kept", "a list", entries)
-    for index, path in enumerate(entries):
-        if not _inside_assets(_string(path, f"kept[{index}]")):
-            raise _wrong(f"kept[{index}]", _INSIDE_ASSETS, path)
-    return frozenset(entries)
-
-
-def _folders(data: dict[str, object]) -> frozenset[str]:
-    entries = data.get("folders", [])
-    if not isinstance(entries, list):
-        raise _wrong("folders", "a list", entries)
-    for index, path in enumerate(entries):
-        if not _inside_assets(_string(path, f"folders[{index}]")):
-            raise _wrong(f"folders[{index}]", _INSIDE_ASSETS, path)
-    return frozenset(entries)
-
-
-def _parse(text: str) -> LockFile:
-    """The lock in ``text``; raises ``_Malformed`` or ``ValueError``."""
-    data = _object(json.loads(text), "the whole file")
-    version = data.get("version", _MISSING)
-    if type(version) is not int or version != LOCK_VERSION:
-        raise _wrong("version", str(LOCK_VERSION), version)
-    return LockFile(
-        _asset_map(data, "files"),
-        _asset_map(data, "user_files"),
-        _components(data),
-        _gameobjects(data),
-        _kept(data),
-        _robots(data),
-        _folders(data),
-        _primitives(data),
-    )
 
 
 @dataclass(frozen=True, slots=True)
@@ -356,13 +126,13 @@ class LockFile:
         except OSError as exc:
             raise UserError(f"cannot read {path}: {exc.strerror}") from None
         try:
-            return _parse(data.decode("utf-8"))
+            return cls(**read_lock(data.decode("utf-8")))
         except UnicodeDecodeError:
             detail = "it is not UTF-8 text"
         except json.JSONDecodeError as exc:
             reason = exc.msg[:1].lower() + exc.msg[1:]
             detail = f"invalid JSON at line {exc.lineno}, column {exc.colno} ({reason})"
-        except _Malformed as exc:
+        except Malformed as exc:
             detail = exc.detail
         raise UserError(
             f"{path} is not a valid unityscaffold lock file: {detail}",
