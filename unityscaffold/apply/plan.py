@@ -7,7 +7,7 @@ changes and scene edits; nothing is written here (see ``apply.run``).
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -25,7 +25,7 @@ from unityscaffold.apply._lock import (
     sha256,
 )
 from unityscaffold.apply._moves import find_moves
-from unityscaffold.apply._prune import plan_pruning
+from unityscaffold.apply._prune import Pruning, plan_pruning
 from unityscaffold.apply._robot_plan import PlannedRobot, plan_robots
 from unityscaffold.apply._rosbridge2 import rosbridge2_notes
 from unityscaffold.apply._rossharp import RosSharp
@@ -33,7 +33,7 @@ from unityscaffold.apply._scenes import ScenePlan, plan_scenes
 from unityscaffold.apply._scriptmetas import plan_script_metas
 from unityscaffold.apply._settings import with_ros_define
 from unityscaffold.apply._target import target_for
-from unityscaffold.apply._userfiles import plan_user_files
+from unityscaffold.apply._userfiles import UserFiles, plan_user_files
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.fileout import (
     DesiredFile,
@@ -139,12 +139,8 @@ def make_plan(
             f"{project} is not a Unity project (no Assets/ folder)",
             hint="set `project:` in the manifest, or create one with scaffold init",
         )
-    lock = LockFile.read(lock_path(manifest.path))
     journal = journal_path(manifest.path)
-    recovered = None
-    if journal.exists():  # an apply was interrupted: what it may have done counts as done
-        lock = lock.recovered(LockFile.read(journal), project)
-        recovered = lock.render().encode("utf-8")
+    lock, recovered = _last_lock(manifest, journal)
     salt = project_salt(project)
     metas = plan_script_metas(manifest, script_index(project), salt)
     scripts = metas.scripts
@@ -174,23 +170,8 @@ def make_plan(
     made = [project / folder for folder in lock.folders]
     deletions += plan_leftovers(manifest, [d.path for d in desired], deletions, beside, made)
     target_notes = target_for(manifest).notes(project, rossharp)
-    new_lock = LockFile(
-        files={
-            **pruning.kept_files,
-            **{manifest.asset_path(d.path): sha256(d.content) for d in generated},
-        },
-        user_files={**pruning.kept_user_files, **user.digests},
-        components=tuple(sorted({c for s in scenes for c in s.components})),
-        gameobjects=tuple(
-            LockGameObject(s.relative, path, file_id)
-            for s in scenes
-            for path, file_id in sorted(s.gameobjects.items())
-        ),
-        kept=frozenset(pruning.kept_files) | frozenset(pruning.kept_user_files),
-        robots=tuple(sorted(r for s in scenes for r in s.robots)),
-        folders=_robot_folders(robots, lock, project, deletions),
-        primitives=tuple(sorted(p for s in scenes for p in s.primitives)),
-    )
+    folders = _robot_folders(robots, lock, project, deletions)
+    new_lock = _new_lock(manifest, generated, user, pruning, scenes, folders)
     check_inside(project, [d.path for d in desired] + deletions)
     # Beside the manifest, outside the project: the lock's and the journal's temporary files,
     # then the journal itself, removed last (apply.run).
@@ -213,6 +194,44 @@ def make_plan(
         notes,
         skipped_types=len(code.messages.skipped),
         recovered_lock=recovered,
+    )
+
+
+def _last_lock(manifest: Manifest, journal: Path) -> tuple[LockFile, bytes | None]:
+    """The lock the last apply left, and, when that apply was interrupted (its journal is still
+    there), the lock recovered from both, rendered: what it may have done counts as done."""
+    lock = LockFile.read(lock_path(manifest.path))
+    if not journal.exists():
+        return lock, None
+    lock = lock.recovered(LockFile.read(journal), manifest.project_root)
+    return lock, lock.render().encode("utf-8")
+
+
+def _new_lock(
+    manifest: Manifest,
+    generated: list[DesiredFile],
+    user: UserFiles,
+    pruning: Pruning,
+    scenes: Sequence[ScenePlan],
+    folders: frozenset[str],
+) -> LockFile:
+    """The lock this apply leaves: what it generated, and what the scenes hold of its making."""
+    return LockFile(
+        files={
+            **pruning.kept_files,
+            **{manifest.asset_path(d.path): sha256(d.content) for d in generated},
+        },
+        user_files={**pruning.kept_user_files, **user.digests},
+        components=tuple(sorted({c for s in scenes for c in s.components})),
+        gameobjects=tuple(
+            LockGameObject(s.relative, path, file_id)
+            for s in scenes
+            for path, file_id in sorted(s.gameobjects.items())
+        ),
+        kept=frozenset(pruning.kept_files) | frozenset(pruning.kept_user_files),
+        robots=tuple(sorted(r for s in scenes for r in s.robots)),
+        folders=folders,
+        primitives=tuple(sorted(p for s in scenes for p in s.primitives)),
     )
 
 
