@@ -11,6 +11,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from unityscaffold.apply._case_clashes import check_case_clashes
 from unityscaffold.apply._class_notes import class_notes
 from unityscaffold.apply._code import CodePlan, plan_code
 from unityscaffold.apply._identity import follow_in_manifest, followed_notes
@@ -162,6 +163,7 @@ def make_plan(
     desired += user.desired + metas.desired + _settings_change(manifest)
     desired += [DesiredFile(s.path, s.after.encode("utf-8")) for s in scenes if s.changed]
 
+    check_case_clashes(project, [d.path for d in desired])
     wanted = {manifest.asset_path(d.path) for d in desired}
     pruning = plan_pruning(manifest, lock, wanted, user.moved)
     deletions = pruning.deletions
