@@ -44,9 +44,11 @@ def refuse_owned_builtin_fields(editor: SceneEditor, objects: Sequence[SceneObje
     on the object: on a robot's object, the import's one (a link's Rigidbody)."""
     for item in objects:
         go = _found(editor, item.path)
-        for comp in item.components if go is not None else ():
+        if go is None:
+            continue
+        for comp in item.components:
             builtin = builtin_class(comp.type)
-            if comp.key is not None or builtin is None or go is None:
+            if comp.key is not None or builtin is None:
                 continue
             found = editor.doc.find_builtin(go, builtin)
             if found is not None:
@@ -72,10 +74,10 @@ def _refuse(go: GameObject, owned: RobotFields | None, fields: Sequence[Componen
             if key is not None
             else "change the value in the URDF"
         )
-        free = sorted(owned.names)
+        taken = ", ".join(sorted(owned.names))
         raise LocatedError.at(
             field.location,
             f"{owned.label}'s {field.name} on '{go.path}' is set by robot {owned.robot}'s "
             "import (its URDF and `robots` entry own it), which puts it back on every apply",
-            hint=f"{change}, or set a field the import does not own (it owns {', '.join(free)})",
+            hint=f"{change}, or set a field the import does not own (it owns {taken})",
         )
