@@ -6,7 +6,6 @@ silence) stays with the fake in tests/live/test_rosbridge_discovery.py."""
 from __future__ import annotations
 
 import json
-import subprocess
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -16,6 +15,7 @@ from csharp import compile_applied_project
 from helpers import SYSTEM_PYTHON, run_cli
 
 from tests.runtime.bridge import DATA, Bridge
+from tests.runtime.lines import start
 from unityscaffold.interfaces.identity_ros1 import Ros1Identity
 from unityscaffold.interfaces.live import Direction, NameFilter, discover, list_live_types
 from unityscaffold.interfaces.live.definitions import stage_definitions
@@ -30,18 +30,13 @@ ACTION_TOPICS = ("goal", "cancel", "status", "feedback", "result")
 @pytest.fixture(scope="module")
 def truth(bridge: Bridge) -> Iterator[dict[str, Any]]:
     """The node's genpy md5sums and full texts, while it runs."""
-    node = subprocess.Popen(
-        [str(SYSTEM_PYTHON), str(DATA / "discover_node.py")],
-        env=bridge.env,
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        text=True,
-    )
+    node = start([str(SYSTEM_PYTHON), str(DATA / "discover_node.py")], env=bridge.env)
     try:
-        assert node.stdout
-        yield json.loads(node.stdout.readline())
+        # stderr comes in the same stream: the truth is the one line of JSON
+        assert node.wait_for(lambda line: line.startswith("{"), 60), node.finish()
+        yield json.loads(next(line for line in node.seen if line.startswith("{")))
     finally:
-        node.communicate(input="", timeout=30)
+        node.finish()
 
 
 def test_topics_types_directions_definitions_and_services(

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 import shutil
-import subprocess
+import signal
 from collections.abc import Callable
 from pathlib import Path
 
@@ -16,11 +16,13 @@ from helpers import SYSTEM_PYTHON, run_cli
 
 from tests.runtime.bridge import DATA, Bridge, free_port, wait_for
 from tests.runtime.client import CSHARP, mcs_compile
+from tests.runtime.lines import Lines, start
 from tests.runtime.ros2 import Rosbridge2
 from tests.runtime.runtime_helpers import SAMPLE_ROS2_INTERFACES
 
 REPO = Path(__file__).resolve().parents[2]
 GENERATED = REPO / "sample_project" / "unity" / "Assets" / "RosGenerated"
+TIMEOUT = 60  # seconds; a guard against a hang only
 RATE_TOLERANCE = 0.3  # of the 10 Hz rate, over a 4 s window on a shared machine
 # The sample's topics (sample_project/robot.yaml) for ROS 2.
 ROS2_MANIFEST = """\
@@ -72,14 +74,8 @@ def test_sample_scripts_run_in_a_frame_loop(
 ) -> None:
     exe = _build(mcs, rossharp_client, rossharp_package)
     result = tmp_path / "node.json"
-    node = subprocess.Popen(
-        [str(SYSTEM_PYTHON), str(DATA / "script_node.py"), str(result)],
-        env=bridge.env,
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        text=True,
-    )
-    assert node.stdout and node.stdout.readline().strip() == "ready"
+    node = start([str(SYSTEM_PYTHON), str(DATA / "script_node.py"), str(result)], env=bridge.env)
+    assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
     subscribed = lambda topic: _subscribed_by_rosbridge(bridge, topic)  # noqa: E731
     _run_and_check(mono, exe, bridge.url, node, result, subscribed)
 
@@ -101,14 +97,11 @@ def test_the_sample_scripts_for_ros2_run_in_a_frame_loop(
     generated = project / "Assets" / "RosGenerated"
     exe = _build(mcs, rossharp_ros2_client, rossharp_package, generated)
     result = tmp_path / "node.json"
-    node = subprocess.Popen(
+    node = start(
         [str(rosbridge2.ros2.python), str(DATA / "ros2" / "script_node.py"), str(result)],
         env=rosbridge2.ros2.env,
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        text=True,
     )
-    assert node.stdout and node.stdout.readline().strip() == "ready"
+    assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
 
     def subscribed(topic: str) -> bool:
         answer = rosbridge2.call("/rosapi/subscribers", {"topic": topic})
@@ -127,44 +120,36 @@ def _run_and_check(
     mono: str,
     exe: Path,
     url: str,
-    node: subprocess.Popen[str],
+    node: Lines,
     result: Path,
     subscribed: Callable[[str], bool],
 ) -> None:
     unreachable = f"ws://127.0.0.1:{free_port()}"
-    scenario = subprocess.Popen(
-        [mono, str(exe), url, unreachable],
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.STDOUT,
-        text=True,
-    )
-    assert scenario.stdin and scenario.stdout
-    report: dict[str, str] = {}
-    lines: list[str] = []
+    scenario = start([mono, str(exe), url, unreachable])
     try:
-        for line in scenario.stdout:
-            lines.append(line.rstrip())
-            key, _, value = line.rstrip().partition(" ")
-            report.setdefault(key, value)
-            if key == "waiting":
-                # OnDestroy unsubscribed: rosbridge dropped its /odom subscriber, kept the others.
-                wait_for(
-                    "rosbridge to drop /odom",
-                    lambda: not subscribed("/odom"),
-                    5,
-                    [],
-                )
-                assert subscribed("/base_status")
-                scenario.stdin.write("\n")
-                scenario.stdin.flush()
-        assert scenario.wait(timeout=30) == 0, "\n".join(lines)
+        if scenario.wait_for(lambda line: line.startswith("waiting "), TIMEOUT):
+            # OnDestroy unsubscribed: rosbridge dropped its /odom subscriber, kept the others.
+            wait_for("rosbridge to drop /odom", lambda: not subscribed("/odom"), 5, [])
+            assert subscribed("/base_status")
+            assert scenario.process.stdin
+            scenario.process.stdin.write("\n")
+            scenario.process.stdin.flush()
+            scenario.wait_for(lambda line: line.startswith("done "), TIMEOUT)
     finally:
-        if scenario.poll() is None:
-            scenario.kill()
-        node.communicate(input="", timeout=30)
+        # Every wait is bounded: a scenario or node that hangs is killed and its output reported.
+        output = scenario.finish()
+        node_output = node.finish()
+    lines = output.splitlines()
+    report: dict[str, str] = {}
+    for line in lines:
+        key, _, value = line.partition(" ")
+        report.setdefault(key, value)
+    # The scenario's last step is ROS#'s RosSocket.Close, which can hang on a socket rosbridge
+    # has already broken (it is not ours): a scenario killed after reporting "done" passes.
+    code = scenario.process.returncode
+    ended = code == 0 or (code == -signal.SIGKILL and "done" in report)
+    assert ended and result.exists(), f"{output}\n--- node:\n{node_output}"
     cmd_vel = json.loads(result.read_text())["cmd_vel"]
-    output = "\n".join(lines)
 
     # The scripts were started before the connection was up, waited, then worked.
     assert int(report["connected_frame"]) > 0, output
