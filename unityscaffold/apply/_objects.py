@@ -171,7 +171,7 @@ class Hooks:
     """What the scene editor lends: where a named object is now (renames followed), a record of
     the objects used (for the lock's identities), the reference resolver, the assets this
     apply writes by path (a robot's materials, whose ``.meta`` may not be on disk yet), and
-    the primitives by object path as the lock has them (``made`` collects this run's)."""
+    the primitives by object path as the lock has them."""
 
     now: Callable[[str], str]
     record: Callable[[GameObject], None]
@@ -179,17 +179,18 @@ class Hooks:
     assets: Mapping[str, AssetRef]
     scene: str = ""
     primitives: Mapping[str, LockPrimitive] = field(default_factory=dict)
-    made: list[LockPrimitive] = field(default_factory=list)
 
 
 @dataclass(frozen=True, slots=True)
 class DeclaredObjects:
-    """A scene's declared objects after the first pass, for the reference pass."""
+    """A scene's declared objects after the first pass, for the reference pass, and what
+    their primitives made this run, for the lock."""
 
     ordered: tuple[SceneObject, ...]
     edits: list[str]
     hooks: Hooks
     project_root: Path
+    made: tuple[LockPrimitive, ...]
 
 
 def declare_scene_objects(
@@ -212,7 +213,7 @@ def declare_scene_objects(
     declared = declare_objects(
         editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks
     )
-    editor.plan.primitives += hooks.made
+    editor.plan.primitives += declared.made
     return declared
 
 
@@ -230,6 +231,7 @@ def declare_objects(
     """
     tags = project_tags(project_root)
     ordered = sorted(objects, key=lambda o: o.path.count("/"))
+    made: list[LockPrimitive] = []
     for item in ordered:
         _check_tag(item, tags)
         with located_at(item.locations.of("path")):
@@ -244,24 +246,25 @@ def declare_objects(
                 doc.set_fields(go.transform_id, _transform_fields(item, stored))
             if doc.revision != revision and not created:
                 edits.append(f"update object {item.path}")
-        _make_primitive(doc, item, go, hooks, edits, project_root)
+        if item.primitive is not None:
+            made.append(_make_primitive(doc, item, item.primitive, go, hooks, edits, project_root))
         for comp in item.components:
             _ensure(doc, item, comp, hooks, edits, project_root, references=False)
-    return DeclaredObjects(tuple(ordered), edits, hooks, project_root)
+    return DeclaredObjects(tuple(ordered), edits, hooks, project_root, tuple(made))
 
 
 def _make_primitive(
     doc: SceneDocument,
     item: SceneObject,
+    shape: str,
     go: GameObject,
     hooks: Hooks,
     edits: list[str],
     project_root: Path,
-) -> None:
-    """``item``'s primitive: what an earlier shape made and this one does not removed, then
-    this shape's components; the ones apply added (now or before) recorded for the lock."""
-    if item.primitive is None:
-        return
+) -> LockPrimitive:
+    """``item``'s primitive ``shape``: what an earlier shape made and this one does not
+    removed, then this shape's components; the lock's record of the ones apply added (now or
+    before)."""
     recorded = hooks.primitives.get(item.path)
     with located_at(item.locations.of("primitive")):
         edits += remove_replaced(doc, go, item, recorded)
@@ -272,7 +275,7 @@ def _make_primitive(
         file_id, added = _ensure(doc, item, comp, hooks, edits, project_root, False, restart)
         if added or file_id in earlier:
             made.append(file_id)
-    hooks.made.append(LockPrimitive(hooks.scene, item.path, item.primitive, tuple(sorted(made))))
+    return LockPrimitive(hooks.scene, item.path, shape, tuple(sorted(made)))
 
 
 def set_builtin_references(doc: SceneDocument, declared: DeclaredObjects) -> None:
