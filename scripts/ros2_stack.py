@@ -30,7 +30,9 @@ The stack is cached: ``ROOT`` is ``ros2-jazzy-<key>`` under ``UNITYSCAFFOLD_ROS2
 Python's version). A change to any of them builds a new stack; nothing is reused on trust. A
 build that stopped half-way has no ``.complete`` marker and is built again; a lock file keeps
 two builds of one key from running at once. On a fresh machine the build takes several minutes
-(the pip downloads and three CMake builds); cached, it is a digest and a check.
+(the pip downloads and three CMake builds); cached, it is a digest and a check. Each use touches
+the stack's marker; a new build removes the other stacks (about 300 MB each) that nothing has
+used for ``STALE_DAYS``, so a machine that builds many keys does not keep them all.
 
 Everything talks on loopback only: ``environment()`` sets ``ROS_AUTOMATIC_DISCOVERY_RANGE=
 LOCALHOST`` and the ``ROS_DOMAIN_ID`` it is given (pick one at random per test session, so
@@ -47,6 +49,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -63,6 +66,8 @@ BUILT_NUMPY_INCLUDE = "/opt/python/cp311-cp311/lib/python3.11/site-packages/nump
 # The tools the build needs beside the venv's Python (Debian: cmake, g++, make, python3-dev,
 # python3-venv).
 BUILD_TOOLS = ("cmake", "make", "gcc", "g++")
+# Another key's stack unused for this long is removed when a new one is built.
+STALE_DAYS = 14
 
 # rosbridge_suite's Python packages (sources on PYTHONPATH) and the ros2cli parts rosapi imports.
 ROSBRIDGE_SOURCES = ("rosbridge_library/src", "rosbridge_server/src", "rosapi/src")
@@ -173,6 +178,7 @@ def ensure() -> Path:
     root = stack_root()
     marker = root / ".complete"
     if marker.exists():
+        marker.touch()  # last used now: see _prune_stale
         return root
     root.parent.mkdir(parents=True, exist_ok=True)
     with _locked(root.with_name(root.name + ".lock")):
@@ -189,7 +195,29 @@ def ensure() -> Path:
         root.mkdir()
         _build(root)
         marker.write_text(root.name + "\n")
+    _prune_stale(root)
     return root
+
+
+def _prune_stale(kept: Path) -> None:
+    """Remove the other stacks beside ``kept`` whose marker nothing has touched for
+    ``STALE_DAYS`` (and that no build holds the lock of): a stack in use is touched at each use."""
+    cutoff = time.time() - STALE_DAYS * 86400
+    for other in sorted(kept.parent.glob("ros2-jazzy-*")):
+        if other == kept or not other.is_dir():
+            continue
+        marker = other / ".complete"
+        if marker.exists() and marker.stat().st_mtime > cutoff:
+            continue
+        lock = other.with_name(other.name + ".lock")
+        with lock.open("w") as handle:
+            try:
+                fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:  # being built right now
+                continue
+            shutil.rmtree(other, ignore_errors=True)
+        lock.unlink(missing_ok=True)
+        print(f"ros2_stack: removed {other}, unused for {STALE_DAYS} days", file=sys.stderr)
 
 
 @contextmanager

@@ -4,7 +4,10 @@ undoing it finds the first one again."""
 
 from __future__ import annotations
 
+import fcntl
+import os
 import shutil
+import time
 from pathlib import Path
 
 import pytest
@@ -33,3 +36,26 @@ def test_the_stack_folder_follows_the_built_packages_files(
     assert module.stack_root() != before
     message.write_text(message.read_text().replace("int32 added\n", ""))
     assert module.stack_root() == before
+
+
+def test_a_new_build_removes_only_the_stacks_nothing_used_lately(tmp_path: Path) -> None:
+    module = stack_module()
+    old = time.time() - (module.STALE_DAYS + 1) * 86400
+    stacks = {}
+    for name in ("kept", "stale", "recent", "half-built", "building"):
+        folder = tmp_path / f"ros2-jazzy-{name}"
+        (folder / "venv").mkdir(parents=True)
+        if name != "half-built":
+            (folder / ".complete").write_text(folder.name + "\n")
+        stacks[name] = folder
+    for name in ("stale", "building"):
+        os.utime(stacks[name] / ".complete", (old, old))
+    os.utime(stacks["half-built"], (old, old))
+    other = tmp_path / "noop"  # not a stack: never looked at
+    other.mkdir()
+    lock = stacks["building"].with_name(stacks["building"].name + ".lock")
+    with lock.open("w") as held:
+        fcntl.flock(held, fcntl.LOCK_EX)  # a build of that key is running
+        module._prune_stale(stacks["kept"])
+    left = sorted(p.name for p in tmp_path.iterdir() if p.is_dir())
+    assert left == ["noop", "ros2-jazzy-building", "ros2-jazzy-kept", "ros2-jazzy-recent"]
