@@ -24,15 +24,15 @@ ros2/ros2cli, branch ``jazzy``) and ``UNITYSCAFFOLD_ROSIDL_RUNTIME_PY`` (github.
 rosidl_runtime_py, branch ``jazzy``), or from ``../shared/vendor`` beside the repository, where CI
 puts them.
 
-The stack is cached: ``ROOT`` is ``ros2-jazzy-<key>`` under ``UNITYSCAFFOLD_ROS2_CACHE``
-(default ``~/.cache/unityscaffold``), ``<key>`` a digest of everything the build reads and does
-(its steps' source in this script, the pinned requirements, the built packages' files, the
-Python's version). A change to any of them builds a new stack; nothing is reused on trust. A
-build that stopped half-way has no ``.complete`` marker and is built again; a lock file keeps
-two builds of one key from running at once. On a fresh machine the build takes several minutes
-(the pip downloads and three CMake builds); cached, it is a digest and a check. Each use touches
-the stack's marker; a new build removes the other stacks (about 300 MB each) that nothing has
-used for ``STALE_DAYS``, so a machine that builds many keys does not keep them all.
+The stack is cached: ``ROOT`` is ``ros2-jazzy-<key>`` under ``UNITYSCAFFOLD_ROS2_CACHE`` (default
+``~/.cache/unityscaffold``), ``<key>`` a digest of everything the build reads and does (its steps'
+source in this script, the pinned requirements, the built packages' files, the Python's version). A
+change to any of them builds a new stack; nothing is reused on trust. A build that stopped half-way
+has no ``.complete`` marker and is built again; a lock file keeps two builds of one key from
+running at once. On a fresh machine the build takes several minutes (the pip downloads and three
+CMake builds); cached, it is a digest and a check. Each use touches the stack's marker; a new build
+removes the other stacks (about 350 MB each) that nothing has used for ``STALE_DAYS``, so a machine
+that builds many keys does not keep them all.
 
 Everything talks on loopback only: ``environment()`` sets ``ROS_AUTOMATIC_DISCOVERY_RANGE=
 LOCALHOST`` and the ``ROS_DOMAIN_ID`` it is given (pick one at random per test session, so
