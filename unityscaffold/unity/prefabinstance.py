@@ -5,7 +5,8 @@ made to its objects), one *stripped* document for each object of the source the 
 refers to (the instance's root Transform, which its parent lists among its children, and each
 GameObject a component was added to), and the added components as ordinary documents. The
 layout is the one Unity wrote for the instances ROS#'s URDF importer made of the r2d2 sample's
-``.dae`` models (``tests/unity/test_prefabinstance.py`` compares with it).
+``.dae`` models (``tests/urdf/test_models.py`` compares with it); the order of the changes and
+the form of a material set on a renderer are Unity's too (``tests/unity/test_prefabinstance.py``).
 
 ``ModelInstance`` is what the urdf stage decides (which source, which changes, in Unity's
 order); ``instance_documents`` lays it out once the writer knows the GUIDs of the assets and
@@ -25,7 +26,9 @@ __all__ = [
     "AssetObject",
     "ModelInstance",
     "Modification",
+    "in_unity_order",
     "instance_documents",
+    "material_modifications",
     "root_modifications",
 ]
 
@@ -49,11 +52,13 @@ class AssetObject:
 @dataclass(frozen=True, slots=True)
 class Modification:
     """One changed property of an object of the source (by its fileID there); ``value`` is
-    the text Unity writes after ``value:`` (a number as Unity formats it, or a string)."""
+    the text Unity writes after ``value:`` (a number as Unity formats it, or a string), and
+    ``reference`` the asset written as ``objectReference`` (none: ``{fileID: 0}``)."""
 
     target: int
     property_path: str
     value: str
+    reference: AssetObject | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -83,6 +88,10 @@ class ModelInstance:
         button "Convex", the manifest's ``convex:``)."""
         added = tuple(replace(a, convex=convex) for a in self.added)
         return replace(self, added=added)
+
+    def with_changes(self, changes: tuple[Modification, ...]) -> ModelInstance:
+        """The same instance with ``changes`` made after its own, in Unity's order."""
+        return replace(self, modifications=in_unity_order((*self.modifications, *changes)))
 
     def scene_roles(self) -> tuple[str, ...]:
         """A name for each document the instance needs in a scene, for the writer to give
@@ -120,6 +129,20 @@ def root_modifications(
     )
     named = Modification(gameobject, "m_Name", format_string(name, column=13, indent=8))
     return (*(Modification(transform, path, value) for path, value in pose), named)
+
+
+def material_modifications(
+    renderers: tuple[int, ...], material: AssetObject
+) -> tuple[Modification, ...]:
+    """What Unity records when a script sets ``sharedMaterial`` on each of ``renderers`` (ROS#'s
+    ``UrdfMaterial.SetMaterial``), each renderer holding one material: its first entry."""
+    return tuple(Modification(r, "m_Materials.Array.data[0]", "", material) for r in renderers)
+
+
+def in_unity_order(changes: tuple[Modification, ...]) -> tuple[Modification, ...]:
+    """``changes`` as Unity keeps them: by their target's fileID (a signed number), each
+    target's in the order they were made (``docs/unity-yaml.md`` shows where this is seen)."""
+    return tuple(sorted(changes, key=lambda change: change.target))
 
 
 def instance_documents(
@@ -174,11 +197,12 @@ def _prefab_instance(
         "    m_Modifications:",
     ]
     for change in instance.modifications:
+        reference = change.reference.render(guid_of) if change.reference else "{fileID: 0}"
         lines += [
             f"    - target: {of_source(change.target)}",
             f"      propertyPath: {change.property_path}",
             f"      value: {change.value}",
-            "      objectReference: {fileID: 0}",
+            f"      objectReference: {reference}",
         ]
     lines += _items("    m_RemovedComponents:", [f"- {of_source(i)}" for i in instance.removed])
     lines += ["    m_RemovedGameObjects: []", "    m_AddedGameObjects: []"]
