@@ -4,8 +4,9 @@ A scene refers to a model's objects by fileIDs Unity derives from the model's no
 (``unity.modelids``), and ROS#'s ``ColladaAssetPostProcessor`` turns the model's root by the
 file's ``<up_axis>``. So a few facts of the file decide what a scene holding the model reads:
 its up axis and unit, its top nodes (a file with one top node is folded into the model's root)
-with their transforms, the geometries each instantiates, and the texture files its images name
-(copied beside it, as ROS#'s transfer does). Nothing else of the file is read.
+with their transforms, the geometries each instantiates and the parts those are drawn in (each
+part a submesh, with a material slot of its own on the renderer), and the texture files its
+images name (copied beside it, as ROS#'s transfer does). Nothing else of the file is read.
 """
 
 from __future__ import annotations
@@ -19,13 +20,18 @@ from unityscaffold.urdf._xml import Element, Text, XmlSource, parse_xml
 __all__ = ["ColladaFacts", "ColladaNode", "read_collada"]
 
 _TRANSFORMS = ("translate", "rotate", "scale", "matrix", "lookat", "skew")
+# the elements of a <mesh> that each draw a part of it (COLLADA 1.4's primitives)
+_PRIMITIVES = frozenset(
+    ("lines", "linestrips", "polygons", "polylist", "triangles", "trifans", "tristrips")
+)
 
 
 @dataclass(frozen=True, slots=True)
 class ColladaNode:
     """A ``<node>`` of the visual scene: its ``name`` and ``id``, how many geometries it
     instantiates, whether it has child nodes (or instantiates other nodes), and whether its
-    transform moves or turns it (a scale alone does not)."""
+    transform moves or turns it (a scale alone does not); ``parts``: how many primitives
+    (``<triangles>``, ``<polylist>``, …) the geometries it instantiates have in all."""
 
     name: str
     id: str
@@ -33,6 +39,7 @@ class ColladaNode:
     has_children: bool
     moved: bool
     location: SourceLocation
+    parts: int
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,10 +74,11 @@ def read_collada(path: Path) -> ColladaFacts:
         ) from None
     asset = root.first("asset")
     up_axis = _text(asset.first("up_axis")) if asset is not None else ""
+    parts = _parts(root)
     return ColladaFacts(
         up_axis or "Y_UP",
         _meter(asset),
-        tuple(_node(node, source) for node in _top_nodes(root)),
+        tuple(_node(node, source, parts) for node in _top_nodes(root)),
         _images(root),
     )
 
@@ -104,14 +112,27 @@ def _top_nodes(root: Element) -> list[Element]:
     return picked.elements("node") if picked is not None else []
 
 
-def _node(node: Element, source: XmlSource) -> ColladaNode:
+def _parts(root: Element) -> dict[str, int]:
+    """How many primitives each geometry's ``<mesh>`` has, by the geometry's id."""
+    library = root.first("library_geometries")
+    found: dict[str, int] = {}
+    for geometry in library.elements("geometry") if library is not None else []:
+        mesh = geometry.first("mesh")
+        count = sum(e.tag in _PRIMITIVES for e in mesh.elements()) if mesh is not None else 0
+        found.setdefault(geometry.get("id") or "", count)
+    return found
+
+
+def _node(node: Element, source: XmlSource, parts: dict[str, int]) -> ColladaNode:
+    geometries = node.elements("instance_geometry")
     return ColladaNode(
         name=node.get("name") or "",
         id=node.get("id") or "",
-        geometries=len(node.elements("instance_geometry")),
+        geometries=len(geometries),
         has_children=bool(node.elements("node") or node.elements("instance_node")),
         moved=_moved(node),
         location=source.at(node.offset),
+        parts=sum(parts.get((g.get("url") or "").removeprefix("#"), 0) for g in geometries),
     )
 
 
