@@ -8,6 +8,7 @@ import difflib
 import io
 import os
 import signal
+import struct
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -48,6 +49,13 @@ def build_tree(root: Path, files: dict[str, str]) -> Path:
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text, encoding="utf-8")
     return root
+
+
+def binary_stl(path: Path, facets: int) -> Path:
+    """A binary STL file of ``facets`` copies of one triangle (the unit vectors' tips)."""
+    one = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1) + bytes(2)
+    path.write_bytes(bytes(80) + struct.pack("<I", facets) + one * facets)
+    return path
 
 
 @dataclass(frozen=True)

@@ -9,13 +9,15 @@ import shutil
 from pathlib import Path
 
 import pytest
+from helpers import binary_stl
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity.meta import read_meta_guid
-from unityscaffold.unity.prefabinstance import instance_documents
+from unityscaffold.unity.modelids import ROOT_PATH, model_file_id
+from unityscaffold.unity.prefabinstance import AssetObject, ModelInstance, instance_documents
 from unityscaffold.unity.stlprefab import stl_prefab, stl_prefab_text
 from unityscaffold.urdf import RobotImport, import_robot
-from unityscaffold.urdf.stl import stl_mesh_assets
+from unityscaffold.urdf.stl import FACETS_PER_MESH, stl_mesh_assets
 
 DOC_RE = re.compile(r"^--- !u!(\d+) &(-?\d+)( stripped)?\n", re.M)
 
@@ -221,18 +223,44 @@ def refusal(urdf: Path, project: Path) -> str:
     return caught.value.render()
 
 
-def test_a_material_on_a_mesh_visual_is_refused_at_the_material(
+MATERIAL_CHANGE = "m_Materials.Array.data[0]"
+
+
+def material_changes(instance: ModelInstance) -> list[tuple[int, str | None]]:
+    """The instance's material changes: each renderer and the asset it gets."""
+    return [
+        (c.target, c.reference.path if c.reference else None)
+        for c in instance.modifications
+        if c.property_path == MATERIAL_CHANGE
+    ]
+
+
+def test_a_material_on_an_stl_visual_goes_on_every_part_s_renderer_after_the_root_s_changes(
     tmp_path: Path, niryo: Path
 ) -> None:
+    """ROS# sets ``sharedMaterial`` on each renderer under the visual: one per Mesh asset."""
     urdf = stl_robot(
         tmp_path,
         niryo,
-        '<visual><geometry><mesh filename="package://desc/meshes/G1_Rod.STL"/></geometry>\n'
-        '  <material name="red"><color rgba="1 0 0 1"/></material></visual>\n',
+        '<visual><geometry><mesh filename="package://desc/meshes/big.STL"/></geometry>\n'
+        '  <material name="red"><color rgba="1 0 0 1"/></material></visual>\n'
+        '<visual><geometry><mesh filename="package://desc/meshes/big.STL"/></geometry>'
+        "</visual>\n",
     )
-    message = refusal(urdf, tmp_path)
-    assert message.startswith(f"{urdf}:4:3: error: a <material> on a mesh visual")
-    assert "hint: remove the <material>" in message
+    binary_stl(tmp_path / "desc" / "meshes" / "big.STL", FACETS_PER_MESH + 1)
+    result = import_robot(urdf, packages={}, project=tmp_path)
+    painted = result.models["link[0]/visual[0]/shape"]
+    plain = result.models["link[0]/visual[1]/shape"]
+    prefab = stl_prefab("big", 2)
+    assert material_changes(painted) == [
+        (part.renderer, "Materials/red.mat") for part in prefab.parts
+    ]
+    # the rest is the instance a visual without a material gets, its changes first
+    assert painted.modifications[: len(plain.modifications)] == plain.modifications
+    assert material_changes(plain) == [] and len(painted.modifications) == 13
+    (change, _) = painted.modifications[-2:]
+    assert (change.value, change.reference) == ("", AssetObject("Materials/red.mat", 2100000, 2))
+    assert "Materials/red.mat" in result.files
 
 
 @pytest.mark.parametrize(
@@ -282,12 +310,13 @@ def test_other_model_formats_are_refused_at_the_mesh(tmp_path: Path, suffix: str
     assert "hint: convert the mesh to STL or COLLADA" in message
 
 
-def collada(nodes: str, *, up: str = "Y_UP", images: str = "") -> str:
+def collada(nodes: str, *, up: str = "Y_UP", images: str = "", geometries: str = "") -> str:
     return (
         '<?xml version="1.0"?>\n<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema"'
         ' version="1.4.1">\n'
         f'<asset><unit name="meter" meter="1"/><up_axis>{up}</up_axis></asset>\n'
         f"<library_images>{images}</library_images>\n"
+        f"<library_geometries>{geometries}</library_geometries>\n"
         '<library_visual_scenes><visual_scene id="s">\n'
         f"{nodes}</visual_scene></library_visual_scenes>\n"
         '<scene><instance_visual_scene url="#s"/></scene>\n</COLLADA>\n'
@@ -295,15 +324,21 @@ def collada(nodes: str, *, up: str = "Y_UP", images: str = "") -> str:
 
 
 NODE = '<node id="{0}" name="{0}"><instance_geometry url="#g"/></node>\n'
+# the geometry NODE draws, in one part
+GEOMETRY = '<geometry id="g"><mesh><triangles count="0"/></mesh></geometry>'
+RED = '<material name="red"><color rgba="1 0 0 1"/></material>'
+ROOT_TRANSFORM = model_file_id("Transform", ROOT_PATH)
+ROOT_RENDERER = model_file_id("MeshRenderer", ROOT_PATH)
+ROOT_GAMEOBJECT = model_file_id("GameObject", ROOT_PATH)
 
 
-def dae_robot(tmp_path: Path, dae: str, part: str = "collision") -> Path:
+def dae_robot(tmp_path: Path, dae: str, part: str = "collision", material: str = "") -> Path:
     (tmp_path / "desc").mkdir(exist_ok=True)
     (tmp_path / "desc" / "m.dae").write_text(dae, encoding="utf-8")
     urdf = tmp_path / "r.urdf"
     urdf.write_text(
         f'<robot name="r"><link name="a"><{part}><geometry>\n'
-        f'   <mesh filename="package://desc/m.dae"/></geometry></{part}></link></robot>',
+        f'   <mesh filename="package://desc/m.dae"/></geometry>{material}</{part}></link></robot>',
         encoding="utf-8",
     )
     return urdf
@@ -339,6 +374,57 @@ def test_a_multi_node_model_is_a_visual_of_the_root_alone(tmp_path: Path) -> Non
     (instance,) = result.models.values()
     assert [c.value for c in instance.modifications][-1] == "m"
     assert (instance.removed, instance.added) == ((), ())
+
+
+def test_a_material_on_a_collada_visual_goes_on_the_root_s_renderer_in_unity_s_order(
+    tmp_path: Path,
+) -> None:
+    """The root's renderer is between its Transform and its GameObject by fileID, where
+    Unity keeps the change (``tests/unity/test_prefabinstance.py``)."""
+    dae = collada(NODE.format("n"), geometries=GEOMETRY)
+    urdf = dae_robot(
+        tmp_path, dae, "visual", material='<material name=""><color rgba="0 0.5 1 1"/></material>'
+    )
+    result = import_robot(urdf, packages={}, project=tmp_path)
+    (instance,) = result.models.values()
+    paths = [(c.target, c.property_path) for c in instance.modifications]
+    assert paths[9:] == [
+        (ROOT_TRANSFORM, "m_LocalEulerAnglesHint.z"),
+        (ROOT_RENDERER, MATERIAL_CHANGE),
+        (ROOT_GAMEOBJECT, "m_Name"),
+    ]
+    assert material_changes(instance) == [(ROOT_RENDERER, "Materials/rgba-0-0.5-1-1.mat")]
+
+
+@pytest.mark.parametrize(
+    ("nodes", "geometries", "reason"),
+    [
+        (NODE.format("a") + NODE.format("b"), GEOMETRY, "it has several nodes"),
+        (NODE.format("n"), GEOMETRY.replace("</mesh>", "<triangles/></mesh>"), "in 2 parts"),
+        (NODE.format("n").replace("/>", "/><instance_geometry url='#g'/>"), GEOMETRY, "2 parts"),
+        (NODE.format("n"), "", "drawn in 0 parts"),
+    ],
+)
+def test_a_material_on_a_collada_visual_of_other_renderers_is_refused_at_the_material(
+    tmp_path: Path, nodes: str, geometries: str, reason: str
+) -> None:
+    """Which renderers such a model has, or which slots ``sharedMaterial`` replaces on a
+    renderer of several, no Unity-written file here shows."""
+    urdf = dae_robot(tmp_path, collada(nodes, geometries=geometries), "visual", material=RED)
+    message = refusal(urdf, tmp_path)
+    assert message.startswith(
+        f"{urdf}:2:54: error: a <material> on the visual of model 'package://desc/m.dae' is "
+        "not supported: "
+    ), message
+    assert reason in message and "hint: remove the <material>" in message
+
+
+def test_a_textured_material_on_a_mesh_visual_stays_refused(tmp_path: Path) -> None:
+    material = '<material name="skin"><texture filename="package://desc/skin.png"/></material>'
+    urdf = dae_robot(
+        tmp_path, collada(NODE.format("n"), geometries=GEOMETRY), "visual", material=material
+    )
+    assert "material 'skin' has a texture, which is not supported yet" in refusal(urdf, tmp_path)
 
 
 def test_a_model_s_textures_are_copied_if_they_exist_and_must_be_png(tmp_path: Path) -> None:

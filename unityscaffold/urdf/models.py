@@ -12,12 +12,20 @@ mesh (concave) and removes the MeshRenderer and the MeshFilter. A scene records 
   ``unity.importers``, and the PNG textures its images name), whose objects have the fileIDs
   of ``unity.modelids``.
 
-Only what Unity-written files here show is made; the rest is a located error saying why:
+A visual's ``<material>`` is put on every renderer of the instance, as ROS#'s
+``UrdfMaterial.SetMaterial`` does by setting ``sharedMaterial``: Unity records that as a change
+of each renderer's first material slot to the robot's ``Materials/<name>.mat``
+(``unity.prefabinstance.material_modifications``), kept among the instance's other changes in
+Unity's order. Without one the model keeps its own materials.
+
+Only what Unity-written files show is made; the rest is a located error saying why:
 other formats (``.obj``, ``.fbx``: Unity's own import, no saved scene to check), models not
 ``Y_UP`` (ROS# turns their root otherwise), a single top node that is moved (folded into the
 root), collisions with a model of several nodes or geometries (the colliders' targets are not
-checked), other texture formats, and a ``<material>`` on a mesh visual (ROS# would replace the
-model's materials by an override no file here shows).
+checked), other texture formats, and a ``<material>`` on a COLLADA visual unless the model is one
+node drawn in one part (the renderers of other nodes are not checked, nor which slots of a
+renderer with several ``sharedMaterial`` replaces). A textured ``<material>`` is refused for
+every visual (``urdf.materials``).
 """
 
 from __future__ import annotations
@@ -29,19 +37,22 @@ from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import DiagnosticSink
 from unityscaffold.unity.importers import model_meta, texture_meta
+from unityscaffold.unity.material import MATERIAL_FILE_ID
 from unityscaffold.unity.mesh import MESH_FILE_ID
 from unityscaffold.unity.modelids import ROOT_PATH, model_file_id
 from unityscaffold.unity.prefabinstance import (
     AddedMeshCollider,
     AssetObject,
     ModelInstance,
+    material_modifications,
     root_modifications,
 )
 from unityscaffold.unity.stlprefab import StlPrefab, prefab_meta, stl_prefab, stl_prefab_text
 from unityscaffold.urdf import transforms as t
+from unityscaffold.urdf._components import material_name
 from unityscaffold.urdf._packages import ResolvedMesh
 from unityscaffold.urdf.collada import ColladaFacts, read_collada
-from unityscaffold.urdf.model import Mesh, Robot, Visual
+from unityscaffold.urdf.model import Material, Mesh, Robot, Visual
 
 __all__ = ["COLLADA_Y_UP_ROTATION", "ModelAsset", "ModelPlan", "model_plan"]
 
@@ -106,16 +117,10 @@ def model_plan(
     builder = _Builder(sink, stl_meshes)
     instances: dict[str, ModelInstance] = {}
     for key, mesh, visual in _mesh_parts(robot):
-        if visual is not None and visual.material is not None:
-            sink.error(
-                visual.material.location,
-                "a <material> on a mesh visual is not supported: ROS# would put it on the "
-                "model's renderers as an override no Unity-written scene here shows",
-                hint="remove the <material> (the model keeps its own), or give the colour "
-                "to the model file",
-            )
-            continue
-        instance = builder.instance(mesh, meshes[mesh.filename], collision=visual is None)
+        resolved = meshes[mesh.filename]
+        instance = builder.instance(mesh, resolved, collision=visual is None)
+        if instance is not None and visual is not None and visual.material is not None:
+            instance = builder.painted(instance, mesh, resolved, visual.material)
         if instance is not None:
             instances[key] = instance
     sink.raise_if_errors()
@@ -190,6 +195,47 @@ class _Builder:
             f"{where.location.line}): their names differ only by case",
             hint="rename one of the two mesh files (and its <mesh filename>) so that their "
             "names differ by more than case",
+        )
+        return False
+
+    def painted(
+        self, instance: ModelInstance, mesh: Mesh, resolved: ResolvedMesh, material: Material
+    ) -> ModelInstance | None:
+        """A visual's instance with its URDF material on every renderer of the model, as
+        ROS#'s ``UrdfMaterial.SetMaterial`` sets ``sharedMaterial`` on each."""
+        if resolved.relative.suffix.lower() == ".stl":
+            prefab = stl_prefab(resolved.relative.stem, self.stl_meshes[resolved])
+            renderers = tuple(part.renderer for part in prefab.parts)
+        elif self._one_slot(mesh, self._facts(resolved.path), material):
+            renderers = (_ROOT_RENDERER,)
+        else:
+            return None
+        mat = AssetObject(
+            f"Materials/{material_name(material)}.mat", MATERIAL_FILE_ID, _TYPE_NATIVE
+        )
+        return instance.with_changes(material_modifications(renderers, mat))
+
+    def _one_slot(self, mesh: Mesh, facts: ColladaFacts, material: Material) -> bool:
+        """Whether the model's one renderer is its root's, with one material slot: the
+        renderers of a model of several nodes, and what ``sharedMaterial`` does to a renderer
+        of several slots, are not checked against Unity."""
+        (node, *others) = facts.nodes  # one at least: _checked refused a model of none
+        if others or node.has_children:
+            why = "it has several nodes, whose renderers are not checked against Unity"
+        elif node.geometries != 1 or node.parts != 1:
+            why = (
+                f"its node {node.name!r} is drawn in {node.parts} parts, each with a "
+                "material slot of its own, and which slots ROS#'s material replaces is not "
+                "checked against Unity"
+            )
+        else:
+            return True
+        self.sink.error(
+            material.location,
+            f"a <material> on the visual of model {mesh.filename!r} is not supported: {why} "
+            "(only a model of one node drawn in one part is)",
+            hint="remove the <material> (the model keeps its own), or export the model as "
+            "one node with one geometry of one material",
         )
         return False
 

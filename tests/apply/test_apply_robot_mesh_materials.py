@@ -1,0 +1,172 @@
+"""A URDF ``<material>`` on a mesh visual, as ROS#'s importer leaves it: each renderer of the
+instance gets the robot's ``.mat`` in its first material slot, recorded among the instance's
+changes. The instances' text is golden (``golden/robot_materials``; regenerate with
+``UNITYSCAFFOLD_UPDATE=1`` and review the diff); a changed material changes the change, a
+removed one removes it, and a second apply writes nothing."""
+
+from __future__ import annotations
+
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+from helpers import binary_stl, build_tree, require, run_cli, snapshot, text_diff, updating
+from test_apply_robot_models import FINGER, INERTIAL, NIRYO, SCENE
+
+from unityscaffold.unity.scene import SceneDocument
+from unityscaffold.urdf.stl import FACETS_PER_MESH
+
+GOLDEN = Path(__file__).parent / "golden" / "robot_materials"
+MANIFEST = """\
+version: 1
+ros: 2
+project: .
+scene: Assets/Scenes/Main.unity
+robots:
+  - urdf: ros/bot.urdf
+    packages: {desc: ros/desc}
+"""
+STL = '<mesh filename="package://desc/meshes/{}.STL"/>'
+DAE = '<mesh filename="package://desc/meshes/l_finger.dae"/>'
+# the three ways a visual names its material: a top-level definition, one of its own, unnamed
+MATERIALS = {
+    "top": '<material name="grey"/>',
+    "inline": '<material name="red"><color rgba="1 0 0 1"/></material>',
+    "rgba": '<material name=""><color rgba="0 0.5 1 1"/></material>',
+}
+
+
+def visual(mesh: str, material: str) -> str:
+    return f"<visual><geometry>{mesh}</geometry>{material}</visual>"
+
+
+def urdf(materials: dict[str, str]) -> str:
+    """A robot whose links each hold an STL visual and a COLLADA visual with one material:
+    ``big`` is an STL cut into two Mesh assets (two renderers)."""
+    links, joints = [], []
+    for i, (name, material) in enumerate(materials.items()):
+        stl = STL.format("big" if name == "rgba" else "G1_Rod")
+        links.append(
+            f'<link name="{name}">{INERTIAL}\n  {visual(stl, material)}\n'
+            f"  {visual(DAE, material)}\n</link>"
+        )
+        if i:
+            joints.append(
+                f'<joint name="j{i}" type="fixed"><parent link="top"/>'
+                f'<child link="{name}"/></joint>'
+            )
+    return (
+        '<robot name="bot">\n<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n'
+        + "\n".join(links + joints)
+        + "\n</robot>\n"
+    )
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    require(
+        (NIRYO / "G1_Rod.STL").is_file() and (FINGER / "l_finger.dae").is_file(),
+        "the vendored meshes",
+    )
+    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
+    root = build_tree(tmp_path / "p", {"ros/bot.urdf": urdf(MATERIALS), "robot.yaml": MANIFEST})
+    meshes = root / "ros/desc/meshes"
+    meshes.mkdir(parents=True)
+    shutil.copy(NIRYO / "G1_Rod.STL", meshes / "G1_Rod.STL")
+    # one facet past what one Mesh asset takes: ROS# cuts it in two
+    binary_stl(meshes / "big.STL", FACETS_PER_MESH + 1)
+    shutil.copy(FINGER / "l_finger.dae", meshes / "l_finger.dae")
+    return root
+
+
+def apply(project: Path, *extra: str):  # type: ignore[no-untyped-def]
+    return run_cli("apply", str(project / "robot.yaml"), *extra)
+
+
+def instances(project: Path) -> str:
+    """The scene's PrefabInstance documents, each headed by the path of its visual."""
+    scene = SceneDocument.load(project / SCENE)
+    parts = []
+    for _, go in scene.tree():
+        if go.is_prefab_instance:
+            parent = scene.hierarchy.nodes[go.file_id].parent
+            path = scene.gameobject(parent).path if parent else ""
+            text = scene.document(go.file_id).text
+            parts.append((path, f"# {path}\n{text}"))
+    return "".join(text for _, text in sorted(parts))
+
+
+def material_guids(project: Path) -> dict[str, str]:
+    folder = project / "Assets/Urdf/bot/Materials"
+    return {
+        meta.name.removesuffix(".mat.meta"): re.search(r"guid: (\w+)", meta.read_text()).group(1)  # type: ignore[union-attr]
+        for meta in folder.glob("*.mat.meta")
+    }
+
+
+def test_mesh_visuals_with_a_material_are_the_golden_instances(project: Path) -> None:
+    run = apply(project)
+    assert run.code == 0, run.err
+    text = instances(project)
+    golden = GOLDEN / "instances.txt"
+    if updating():
+        golden.parent.mkdir(parents=True, exist_ok=True)
+        golden.write_text(text, encoding="utf-8")
+    assert text == golden.read_text(encoding="utf-8"), text_diff(
+        golden.read_text(), text, golden.name
+    )
+    # the .mat each refers to: the top-level one, the visual's own, the one named by colour
+    guids = material_guids(project)
+    assert sorted(guids) == ["Default", "grey", "red", "rgba-0-0.5-1-1"]
+    for name, renderers in (("grey", 2), ("red", 2), ("rgba-0-0.5-1-1", 3)):
+        assert text.count(f"{{fileID: 2100000, guid: {guids[name]}, type: 2}}") == renderers
+    before = snapshot(project)
+    assert apply(project).code == 0 and snapshot(project) == before
+    assert apply(project, "--check").code == 0
+
+
+def test_a_changed_material_changes_the_renderers_and_a_removed_one_leaves_the_model_s(
+    project: Path,
+) -> None:
+    assert apply(project).code == 0
+    changed = {**MATERIALS, "inline": '<material name="red"><color rgba="1 0 0 0.5"/></material>'}
+    changed["rgba"] = '<material name=""><color rgba="0 1 0 1"/></material>'
+    (project / "ros/bot.urdf").write_text(urdf(changed))
+    assert apply(project).code == 0
+    guids = material_guids(project)
+    assert sorted(guids) == ["Default", "grey", "red", "rgba-0-1-0-1"]
+    assert (
+        "_Color: {r: 1, g: 0, b: 0, a: 0.5}"
+        in (project / "Assets/Urdf/bot/Materials/red.mat").read_text()
+    )
+    text = instances(project)
+    assert text.count(f"guid: {guids['rgba-0-1-0-1']}, type: 2}}") == 3
+    assert apply(project, "--check").code == 0
+    # no material: the instances are the ones a visual without one gets, nothing else
+    (project / "ros/bot.urdf").write_text(urdf(dict.fromkeys(MATERIALS, "")))
+    run = apply(project)
+    assert run.code == 0, run.err
+    text = instances(project)
+    assert "m_Materials" not in text and text.count("--- !u!1001 ") == 6
+    assert sorted(material_guids(project)) == ["Default", "grey"]
+    before = snapshot(project)
+    assert apply(project).code == 0 and snapshot(project) == before
+    assert apply(project, "--check").code == 0
+
+
+def test_a_material_on_a_model_of_several_parts_is_refused_and_nothing_written(
+    project: Path,
+) -> None:
+    dae = (project / "ros/desc/meshes/l_finger.dae").read_text()
+    # the finger drawn in two parts: two submeshes, two material slots on its renderer
+    triangles = re.search(r"<triangles .*?</triangles>", dae, re.S)
+    assert triangles
+    dae = dae.replace(triangles.group(), triangles.group() * 2)
+    (project / "ros/desc/meshes/l_finger.dae").write_text(dae)
+    before = snapshot(project)
+    run = apply(project)
+    assert run.code == 2, run.out + run.err
+    assert "bot.urdf:5:85: error: a <material> on the visual of model" in run.err, run.err
+    assert run.err.count("is drawn in 2 parts") == 3
+    assert snapshot(project) == before
