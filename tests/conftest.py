@@ -7,7 +7,6 @@ A missing tool or data set skips a test on a developer machine, and fails it in 
 from __future__ import annotations
 
 import shutil
-import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -15,6 +14,7 @@ from pathlib import Path
 import pytest
 from helpers import IN_CI, SYSTEM_PYTHON, require
 from hypothesis import settings
+from processes import run
 
 # Speed is measured by bench/, never asserted by tests: no per-example time limit, which on a
 # loaded machine turned one slow first call into a "Flaky" failure. In CI (CI=true) the examples
@@ -68,10 +68,7 @@ def ros2_share() -> Path:
 def genmsg_python() -> Path:
     works = (
         SYSTEM_PYTHON.exists()
-        and subprocess.run(
-            [str(SYSTEM_PYTHON), "-c", "import genmsg"], capture_output=True
-        ).returncode
-        == 0
+        and run([str(SYSTEM_PYTHON), "-c", "import genmsg"], timeout=60).returncode == 0
     )
     require(works, "Debian's python3-genmsg under /usr/bin/python3")
     return SYSTEM_PYTHON

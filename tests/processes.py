@@ -1,6 +1,8 @@
-"""Background servers for the tests that run real ROS processes (tests/live, tests/runtime):
-a free loopback port, a process started in its own group with its output in a log, stopped with
-its children, and a readiness poll that fails with the logs' last lines."""
+"""Processes for the tests that run real tools and ROS processes (tests/live, tests/runtime, ...):
+a command run to its end within a time limit, a free loopback port, a background server started
+in its own group with its output in a log, stopped with its children, and a readiness poll that
+fails with the logs' last lines. Every wait is bounded: a hang fails the test with what the
+process printed, it never stops the suite."""
 
 from __future__ import annotations
 
@@ -11,6 +13,29 @@ import subprocess
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
+
+
+def run(
+    argv: list[str], *, timeout: float, check: bool = False, **options: Any
+) -> subprocess.CompletedProcess[str]:
+    """``argv`` to its end, its output captured as text; killed after ``timeout`` seconds, and
+    the test then fails with what it printed by then. ``check``: a non-zero exit fails too."""
+    try:
+        done = subprocess.run(argv, capture_output=True, text=True, timeout=timeout, **options)
+    except subprocess.TimeoutExpired as error:
+        printed = "".join(_text(part) for part in (error.stdout, error.stderr))
+        raise AssertionError(f"{argv} did not end within {timeout} s:\n{printed}") from None
+    if check and done.returncode != 0:
+        raise AssertionError(f"{argv} exited {done.returncode}:\n{done.stdout}{done.stderr}")
+    return done
+
+
+def _text(output: str | bytes | None) -> str:
+    # subprocess's timeout keeps the output read so far as bytes, whatever ``text`` says.
+    if isinstance(output, bytes):
+        return output.decode(errors="replace")
+    return output or ""
 
 
 def free_port() -> int:

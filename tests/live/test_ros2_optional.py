@@ -4,9 +4,10 @@ without it that command says what to install instead of failing with a traceback
 from __future__ import annotations
 
 import json
-import subprocess
 import sys
 from pathlib import Path
+
+import processes
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -21,13 +22,8 @@ print(json.dumps({"code": code, "rclpy_imported": sys.modules.get("rclpy") is no
 
 
 def _without_rclpy(cwd: Path, *args: str) -> tuple[dict[str, object], str]:
-    run = subprocess.run(
-        [sys.executable, "-c", _PROGRAM, *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        env={"PYTHONPATH": str(REPO), "PATH": "/usr/bin:/bin"},
-    )
+    env = {"PYTHONPATH": str(REPO), "PATH": "/usr/bin:/bin"}
+    run = processes.run([sys.executable, "-c", _PROGRAM, *args], timeout=120, cwd=cwd, env=env)
     return json.loads(run.stdout.strip().splitlines()[-1]), run.stderr
 
 

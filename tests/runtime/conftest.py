@@ -3,12 +3,12 @@ compiled once per session, and the sample's interface package as Python modules 
 
 from __future__ import annotations
 
-import subprocess
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 from helpers import SYSTEM_PYTHON, require
+from processes import run
 
 from tests.runtime.bridge import Bridge, start_bridge, vendor_folder
 from tests.runtime.client import build_client, build_ros2_client
@@ -43,9 +43,7 @@ def rossharp_package() -> Path:
 @pytest.fixture(scope="session")
 def actionlib_python() -> None:
     """rospy's actionlib under the system Python, for the ROS 1 action tests' rospy side."""
-    works = subprocess.run(
-        [str(SYSTEM_PYTHON), "-c", "import actionlib"], capture_output=True, check=False
-    )
+    works = run([str(SYSTEM_PYTHON), "-c", "import actionlib"], timeout=60)
     require(works.returncode == 0, "rospy's actionlib (Debian package python3-actionlib)")
 
 
@@ -66,7 +64,7 @@ def bridge(
     require(Path("/usr/bin/rosmaster").exists(), "Debian's python3-rosmaster")
     modules = "import rospy, tornado, twisted, autobahn, bson, PIL, rosnode, rosparam, rosservice"
     require(
-        subprocess.run([str(SYSTEM_PYTHON), "-c", modules], capture_output=True).returncode == 0,
+        run([str(SYSTEM_PYTHON), "-c", modules], timeout=60).returncode == 0,
         "rosbridge's Debian dependencies (see .ci/run)",
     )
     home = tmp_path_factory.mktemp("rosbridge")

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import queue
+import signal
 import subprocess
 import threading
 import time
@@ -19,6 +20,7 @@ class Lines:
         assert process.stdout
         self.process = process
         self.seen: list[str] = []
+        self._finished = False
         self._queue: queue.Queue[str | None] = queue.Queue()
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
@@ -49,21 +51,35 @@ class Lines:
         return False
 
     def finish(self, timeout: float = 30) -> str:
-        """Close stdin, wait for the end (kill after ``timeout``), return everything printed."""
+        """Close stdin, wait for the end (kill after ``timeout``), return everything printed,
+        with a last line saying so if the process was killed or ended by a signal."""
+        if self._finished:
+            return "\n".join(self.seen)
         if self.process.stdin and not self.process.stdin.closed:
             with contextlib.suppress(BrokenPipeError):
                 self.process.stdin.close()
+        ending = ""
         try:
             self.process.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
             self.process.kill()
-            self.process.wait()
-            self.seen.append(f"(killed after {timeout} s)")
+            ending = f"(killed after {timeout} s)"
+            # A process in uninterruptible sleep outlives SIGKILL: the test fails on its output
+            # rather than waiting for it.
+            with contextlib.suppress(subprocess.TimeoutExpired):
+                self.process.wait(timeout=10)
+        # A child that inherited the pipe can hold it open after the process ended.
         self._reader.join(10)
         while not self._queue.empty():
             line = self._queue.get()
             if line is not None:
                 self.seen.append(line)
+        code = self.process.returncode
+        if not ending and code is not None and code < 0:
+            ending = f"(ended by {signal.Signals(-code).name})"
+        if ending:
+            self.seen.append(ending)
+        self._finished = True
         return "\n".join(self.seen)
 
 

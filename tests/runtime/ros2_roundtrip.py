@@ -16,7 +16,7 @@ from typing import Any
 from processes import wait_for
 
 from tests.runtime.client import CSHARP, mcs_compile
-from tests.runtime.lines import start
+from tests.runtime.lines import Lines, start
 from tests.runtime.ros2 import Rosbridge2
 from tests.runtime.runtime_helpers import write_code
 from unityscaffold.codegen import ClassRole, Options, generate
@@ -160,15 +160,19 @@ def _run_pair(
     result = work / "result.json"
     args = [str(work / "plan.json"), str(result), str(seed), str(timeout)]
     rclpy_side = bridge.ros2.run_node(DATA / node, *args)
+    echo: Lines | None = None
 
-    # Not ready (it ended first): its output says why, and every type is then "no answer".
     def listed() -> bool:
         return served <= set(bridge.call("/rosapi/services")["values"]["services"])
 
-    if rclpy_side.wait_for(lambda line: line == "ready", timeout) and served:
-        wait_for("the rclpy services in rosapi", listed, timeout, bridge.logs)
-    echo = start([*client, bridge.url, str(work / "plan.txt")])
-    node_output = rclpy_side.finish(timeout=timeout + 120)
-    client_output = echo.finish()
+    try:
+        # Not ready (it ended first): its output says why, and every type is then "no answer".
+        if rclpy_side.wait_for(lambda line: line == "ready", timeout) and served:
+            wait_for("the rclpy services in rosapi", listed, timeout, bridge.logs)
+        echo = start([*client, bridge.url, str(work / "plan.txt")])
+    finally:
+        # A side that hangs is killed, and its output says so.
+        node_output = rclpy_side.finish(timeout=timeout + 120)
+        client_output = echo.finish() if echo else ""
     results = json.loads(result.read_text()) if result.exists() else {}
     return Outcome(results, node_output, client_output)

@@ -6,7 +6,6 @@ from __future__ import annotations
 import json
 import os
 import subprocess
-import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -16,6 +15,7 @@ from helpers import SYSTEM_PYTHON
 
 from tests.runtime.bridge import GENMSG_PY, GENSRV_PY, ROS1_SHARE, Bridge
 from tests.runtime.client import CSHARP, build_client, mcs_compile
+from tests.runtime.lines import Lines, start
 from unityscaffold.codegen import ClassRole, GeneratedCode, Options, generate
 from unityscaffold.interfaces.model import Dialect, MessageSpec, ServiceSpec
 from unityscaffold.interfaces.registry import Registry
@@ -186,59 +186,27 @@ def _run_pair(
     bridge: Bridge, mono: str, echo: EchoProgram, work: Path, node: str, seed: int, timeout: float
 ) -> RoundTrip:
     """Run the rospy side (``data/node``) and, once it says "ready" (its topics or services are
-    known to the master), the C# side, on ``work``'s plan files."""
+    known to the master), the C# side, on ``work``'s plan files. Either side still running when
+    it should have ended is killed, and says so in its output."""
     result = work / "result.json"
-    rospy_side = subprocess.Popen(
-        [
-            str(SYSTEM_PYTHON),
-            str(DATA / node),
-            str(work / "plan.json"),
-            str(result),
-            str(seed),
-            str(timeout),
-        ],
-        env=bridge.env,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.STDOUT,
-        text=True,
-    )
-    lines: list[str] = []
-    ready = threading.Event()
-
-    def read() -> None:
-        assert rospy_side.stdout
-        for line in rospy_side.stdout:
-            lines.append(line)
-            if line.strip() == "ready":
-                ready.set()
-        ready.set()  # ended without "ready": its output says why
-
-    reader = threading.Thread(target=read, daemon=True)
-    reader.start()
-    ready.wait(timeout)
-    client = subprocess.Popen(
-        [mono, str(echo.folder), bridge.url, str(work / "plan.txt")],
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.STDOUT,
-        text=True,
-        env={**os.environ, "MONO_ENV_OPTIONS": ""},
-    )
+    args = [str(work / "plan.json"), str(result), str(seed), str(timeout)]
+    rospy_side = start([str(SYSTEM_PYTHON), str(DATA / node), *args], bridge.env)
+    client: Lines | None = None
     try:
-        rospy_side.wait(timeout=timeout + 60)
-    except subprocess.TimeoutExpired:  # reported by the caller's assertion, with both outputs
-        rospy_side.kill()
-        rospy_side.wait()
-        lines.append(f"\n(rospy side killed after {timeout + 60:.0f} s)\n")
+        # Not ready (it ended first): its output says why, and every type is then "no answer".
+        rospy_side.wait_for(lambda line: line == "ready", timeout)
+        client = start(
+            [mono, str(echo.folder), bridge.url, str(work / "plan.txt")],
+            {**os.environ, "MONO_ENV_OPTIONS": ""},
+        )
     finally:
-        reader.join(10)
-        try:
-            echo_output, _ = client.communicate(input="", timeout=30)
-        except subprocess.TimeoutExpired:  # ROS#'s Close can hang on a socket rosbridge broke
-            client.kill()
-            echo_output, _ = client.communicate()
+        # The node ends on its own within ``timeout``; a hang is killed and reported by the
+        # caller's assertion, with both outputs. ROS#'s Close can hang on a socket rosbridge
+        # broke: the client is killed after finish's grace period then.
+        node_output = rospy_side.finish(timeout=timeout + 60)
+        echo_output = client.finish() if client else ""
     results = json.loads(result.read_text()) if result.exists() else {}
-    return RoundTrip(results, echo_output, "".join(lines))
+    return RoundTrip(results, echo_output, node_output)
 
 
 def service_round_trip(

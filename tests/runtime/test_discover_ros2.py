@@ -15,7 +15,7 @@ from typing import Any
 
 import pytest
 from helpers import run_cli, snapshot
-from processes import wait_for
+from processes import run, wait_for
 
 from tests.runtime.ros2 import Ros2, Rosbridge2, running_rosbridge2
 from unityscaffold.interfaces.identity_ros2 import Ros2Identity
@@ -62,13 +62,8 @@ def _test_site() -> str:
 
 def _in_stack(ros2: Ros2, program: str, *args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
     env = {**ros2.env, "PYTHONPATH": os.pathsep.join([str(REPO), ros2.env["PYTHONPATH"]])}
-    return subprocess.run(
-        [str(ros2.python), "-c", program, _test_site(), *args],
-        cwd=cwd,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=300,
+    return run(
+        [str(ros2.python), "-c", program, _test_site(), *args], timeout=300, cwd=cwd, env=env
     )
 
 

@@ -7,9 +7,9 @@ says what to check, and nothing is thrown on the frame loop's thread."""
 from __future__ import annotations
 
 import shutil
-import subprocess
 from pathlib import Path
 
+import processes
 from helpers import run_cli
 
 from tests.runtime.bridge import Bridge, free_port
@@ -78,12 +78,7 @@ def test_failures_are_one_clear_message_each_and_never_thrown(
     exe = _build(mcs, rossharp_client, rossharp_package, generated, tmp_path / "bin")
     wrong_port = "ws://127.0.0.1:" + bridge.master_url.rsplit(":", 1)[1]
     not_running = f"ws://127.0.0.1:{free_port()}"
-    run = subprocess.run(
-        [mono, str(exe), bridge.url, wrong_port, not_running],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    run = processes.run([mono, str(exe), bridge.url, wrong_port, not_running], timeout=120)
     output = run.stdout + run.stderr
     assert run.returncode == 0 and "done" in run.stdout.splitlines(), output
     assert "Unhandled Exception" not in output

@@ -4,11 +4,15 @@ rosapi lists them with their ROS 2 types."""
 
 from __future__ import annotations
 
+import contextlib
 import json
+import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from processes import wait_for
-from websockets.sync.client import connect
+from websockets.sync.client import ClientConnection, connect
 
 from tests.runtime.ros2 import Ros2, Rosbridge2
 
@@ -20,6 +24,20 @@ def _listed(bridge: Rosbridge2) -> bool:
     services = bridge.call("/rosapi/services")["values"]["services"]
     topics = bridge.call("/rosapi/topics")["values"]["topics"]
     return "/stack/set" in services and "/stack/chatter" in topics
+
+
+def _receive(
+    socket: ClientConnection, wanted: Callable[[dict[str, Any]], bool]
+) -> dict[str, Any] | None:
+    """The first message from rosbridge for which ``wanted`` holds, or None when TIMEOUT passed
+    first (the talker publishes on and on: a bound on each receive alone would never end)."""
+    deadline = time.monotonic() + TIMEOUT
+    with contextlib.suppress(TimeoutError):
+        while (left := deadline - time.monotonic()) > 0:
+            message: dict[str, Any] = json.loads(socket.recv(timeout=left))
+            if wanted(message):
+                return message
+    return None
 
 
 def test_an_rclpy_topic_and_service_reach_a_websocket_client_through_rosbridge_2(
@@ -36,7 +54,7 @@ def test_an_rclpy_topic_and_service_reach_a_websocket_client_through_rosbridge_2
                     {"op": "subscribe", "topic": "/stack/chatter", "type": "std_msgs/msg/String"}
                 )
             )
-            message = json.loads(socket.recv(timeout=TIMEOUT))
+            message = _receive(socket, lambda _: True)
             socket.send(
                 json.dumps(
                     {
@@ -47,12 +65,12 @@ def test_an_rclpy_topic_and_service_reach_a_websocket_client_through_rosbridge_2
                     }
                 )
             )
-            while (answer := json.loads(socket.recv(timeout=TIMEOUT)))["op"] == "publish":
-                pass
+            answer = _receive(socket, lambda m: m["op"] != "publish")
         topics = rosbridge2.call("/rosapi/topics")["values"]
         service_type = rosbridge2.call("/rosapi/service_type", {"service": "/stack/set"})
     finally:
         output = node.finish()
+    assert message, f"nothing from rosbridge within {TIMEOUT} s\n{output}"
     assert message["op"] == "publish" and message["topic"] == "/stack/chatter", message
     assert message["msg"]["data"].startswith("hello "), message
     assert answer == {

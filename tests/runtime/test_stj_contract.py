@@ -11,8 +11,9 @@ default skips fields)."""
 
 from __future__ import annotations
 
-import subprocess
 from pathlib import Path
+
+from processes import run
 
 from tests.runtime.client import CSHARP, mcs_compile
 from tests.runtime.runtime_helpers import (
@@ -30,13 +31,7 @@ def test_every_generated_class_fits_system_text_json_defaults(
 ) -> None:
     program = tmp_path / "StjContract.exe"
     mcs_compile(mcs, [CSHARP / "StjContract.cs"], program, target="exe")
-    done = subprocess.run(
-        [mono, str(program), str(ours_only_client)],
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=True,
-    )
+    done = run([mono, str(program), str(ours_only_client)], timeout=120, check=True)
     seen = {}
     for line in done.stdout.splitlines():
         name, constructor, properties, fields = line.split("\t")

@@ -8,13 +8,12 @@ rospy's actionlib (nav_msgs/GetMap, whose wrappers the connector ships unregiste
 from __future__ import annotations
 
 import os
-import subprocess
 from pathlib import Path
 
 import pytest
 from connector_csharp import RUNNABLE, compile_connector
 from helpers import SYSTEM_PYTHON, require, run_cli
-from processes import free_port, start, stop, wait_for
+from processes import free_port, run, start, stop, wait_for
 
 from tests.runtime.bridge import vendor_folder
 from tests.runtime.client import mcs_compile
@@ -120,13 +119,7 @@ def test_generated_scripts_talk_to_ros_through_the_real_endpoint(
 ) -> None:
     exe = _scenario(mcs, tmp_path)
     port, logs = ros
-    done = subprocess.run(
-        [mono, str(exe), "127.0.0.1", str(port)],
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    done = run([mono, str(exe), "127.0.0.1", str(port)], timeout=120)
     robot = logs[2].read_text(errors="replace")
     report = dict(
         line.split(" ", 1) for line in done.stdout.splitlines() if line and not line.startswith("[")

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import os
-import subprocess
 import sys
 
 import pytest
+from processes import run
 
 from unityscaffold.interfaces.model import Dialect
 
@@ -39,12 +39,8 @@ print(len(code.files), digest.hexdigest())
 
 def _digest(dialect: Dialect, seed: str) -> str:
     env = {**os.environ, "PYTHONHASHSEED": seed}
-    done = subprocess.run(
-        [sys.executable, "-c", _PROGRAM, str(int(dialect))],
-        env=env,
-        check=True,
-        capture_output=True,
-        text=True,
+    done = run(
+        [sys.executable, "-c", _PROGRAM, str(int(dialect))], timeout=600, check=True, env=env
     )
     return done.stdout
 

@@ -7,9 +7,10 @@ v0.7.0), found through ``UNITYSCAFFOLD_ROSTCP`` or beside the repository where C
 
 from __future__ import annotations
 
-import subprocess
 import sys
 from pathlib import Path
+
+from processes import run
 
 from tests.codegen.rostcp.tcp_helpers import PACKAGE_VARIABLE, connector_package
 from unityscaffold.codegen.rostcp._shipped_data import CLASSES, FIELDS
@@ -19,12 +20,7 @@ SCRIPT = REPO / "scripts" / "update_tcp_shipped.py"
 
 
 def test_shipped_table_is_what_the_script_derives_from_the_connector() -> None:
-    done = subprocess.run(
-        [sys.executable, str(SCRIPT), str(connector_package()), "--check"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = run([sys.executable, str(SCRIPT), str(connector_package()), "--check"], timeout=300)
     assert done.returncode == 0, done.stderr + f" (package from {PACKAGE_VARIABLE})"
 
 
