@@ -236,7 +236,14 @@ namespace RosGenerated
                 silentSince = -1f;
                 Debug.Log(GetType().Name + ": no action server heard on " + ActionName + "/status (diffbot_msgs/action/Dock) " + Connector.SecondsTimeout + " s after subscribing; goals wait until one is. If it runs, rosbridge's log says why its status is not passed on.", this);
             }
-            while (true)
+            // Only what was queued when the frame began: what comes meanwhile waits for the next
+            // frame, so answers faster than their callbacks can never keep Update from returning.
+            int waiting;
+            lock (received)
+            {
+                waiting = received.Count;
+            }
+            for (int i = 0; i < waiting; i++)
             {
                 System.Action next;
                 lock (received)

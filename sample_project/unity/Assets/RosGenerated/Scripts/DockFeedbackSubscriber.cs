@@ -80,7 +80,14 @@ namespace RosGenerated
                     }
                 }
             }
-            while (true)
+            // Only what was queued when the frame began: what comes meanwhile waits for the next
+            // frame, so a topic faster than OnMessage can never keep Update from returning.
+            int waiting;
+            lock (received)
+            {
+                waiting = received.Count;
+            }
+            for (int i = 0; i < waiting; i++)
             {
                 global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.DockActionFeedback message;
                 lock (received)

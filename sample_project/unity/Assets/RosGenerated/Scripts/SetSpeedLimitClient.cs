@@ -58,7 +58,14 @@ namespace RosGenerated
 
         protected virtual void Update()
         {
-            while (true)
+            // Only what was queued when the frame began: a response to a call OnResponse makes
+            // waits for the next frame, so calls and answers can never keep Update from returning.
+            int waiting;
+            lock (responses)
+            {
+                waiting = responses.Count;
+            }
+            for (int i = 0; i < waiting; i++)
             {
                 global::RosSharp.RosBridgeClient.MessageTypes.Diffbot.SetSpeedLimitResponse response;
                 lock (responses)

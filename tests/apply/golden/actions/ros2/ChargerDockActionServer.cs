@@ -152,7 +152,14 @@ namespace RosGenerated
 
         protected virtual void Update()
         {
-            while (true)
+            // Only what was queued when the frame began: what comes meanwhile waits for the next
+            // frame, so answers faster than their callbacks can never keep Update from returning.
+            int waiting;
+            lock (received)
+            {
+                waiting = received.Count;
+            }
+            for (int i = 0; i < waiting; i++)
             {
                 System.Action next;
                 lock (received)
