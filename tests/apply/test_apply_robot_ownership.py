@@ -8,53 +8,26 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from helpers import build_tree, run_cli, snapshot
+from helpers import snapshot
+from robot_helpers import HEADER, SCENE, apply_refused, apply_robot, field, inertial, init_project
 
-from unityscaffold.unity.scene import SceneDocument
-
-HEADER = """\
-version: 1
-ros: 2
-project: .
-scene: Assets/Scenes/Main.unity
-robots:
-  - urdf: ros/bot.urdf
-"""
-INERTIAL = (
-    '<inertial><mass value="2"/>'
-    '<inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0" izz="3"/></inertial>'
-)
 URDF = f"""<robot name="bot">
   <material name="blue"><color rgba="0 0 0.8 1"/></material>
-  <link name="base">{INERTIAL}
+  <link name="base">{inertial(2, (1, 2, 3))}
     <visual><geometry><box size="1 2 3"/></geometry><material name="blue"/></visual>
   </link>
-  <link name="arm">{INERTIAL}
+  <link name="arm">{inertial(2, (1, 2, 3))}
     <collision><geometry><sphere radius="0.1"/></geometry></collision>
   </link>
   <joint name="j" type="revolute"><parent link="base"/><child link="arm"/>
     <axis xyz="0 1 0"/><limit effort="1" velocity="1" lower="-1" upper="1"/></joint>
 </robot>
 """
-SCENE = "Assets/Scenes/Main.unity"
 
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    return build_tree(tmp_path / "p", {"ros/bot.urdf": URDF})
-
-
-def _apply(project: Path, body: str = "", *extra: str):  # type: ignore[no-untyped-def]
-    (project / "robot.yaml").write_text(HEADER + body)
-    return run_cli("apply", str(project / "robot.yaml"), *extra)
-
-
-def _field(project: Path, path: str, class_name: str, name: str) -> object:
-    scene = SceneDocument.load(project / SCENE)
-    go = scene.find_gameobject(path)
-    found = [c for c in scene.components_of(go) if c.type_name == class_name]
-    return scene.field(found[0], name)
+    return init_project(tmp_path, {"ros/bot.urdf": URDF})
 
 
 @pytest.mark.parametrize(
@@ -84,13 +57,9 @@ def test_an_entry_that_sets_a_field_the_import_owns_is_refused_at_the_field(
 ) -> None:
     """Else the import and the entry each put their value back: the same update every run."""
     where = f"robot.yaml:8:{body.splitlines()[1].index(value) + 1}:"
-    (project / "robot.yaml").write_text(HEADER + body)
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.out + run.err
+    run = apply_refused(project, HEADER + body)
     assert f"{where} error: {message}" in run.err
     assert "hint: change the value in the URDF, or set a field the import does not own" in run.err
-    assert snapshot(project) == before
 
 
 def test_the_switches_of_the_robots_entry_are_named_in_the_hint(project: Path) -> None:
@@ -98,7 +67,7 @@ def test_the_switches_of_the_robots_entry_are_named_in_the_hint(project: Path) -
         "objects:\n  - {path: bot/base/arm, components: [{type: Rigidbody, fields: "
         "{m_IsKinematic: true}}]}\n"
     )
-    run = _apply(project, body)
+    run = apply_robot(project, body)
     assert run.code == 2, run.out + run.err
     assert "hint: set `kinematic` on the robot's `robots` entry" in run.err
 
@@ -108,11 +77,11 @@ def test_fields_the_import_leaves_alone_stay_the_users_to_set(project: Path) -> 
         "objects:\n  - {path: bot/base, components: [{type: Rigidbody, fields: {m_Drag: 0.5}}]}\n"
         "components:\n  - {script: UrdfRobot, gameobject: bot, fields: {FilePath: ros/bot.urdf}}\n"
     )
-    assert _apply(project, body).code == 0
-    assert _field(project, "bot/base", "Rigidbody", "m_Drag") == "0.5"
-    assert _field(project, "bot", "MonoBehaviour", "FilePath") == "ros/bot.urdf"
+    assert apply_robot(project, body).code == 0
+    assert field(project, "bot/base", "Rigidbody", "m_Drag") == "0.5"
+    assert field(project, "bot", "MonoBehaviour", "FilePath") == "ros/bot.urdf"
     before = snapshot(project)
-    again = _apply(project, body)
+    again = apply_robot(project, body)
     assert again.code == 0 and "the project matches the manifest" in again.out, again.out
     assert snapshot(project) == before
 
@@ -121,24 +90,24 @@ def test_a_switch_removed_from_the_robots_entry_puts_the_imports_value_back(
     project: Path,
 ) -> None:
     """The manifest is the truth: the switches left out are the importer's values, enforced."""
-    assert _apply(project, "    kinematic: true\n    gravity: false\n").code == 0
-    assert _field(project, "bot/base/arm", "Rigidbody", "m_IsKinematic") == "1"
-    assert _field(project, "bot/base/arm", "Rigidbody", "m_UseGravity") == "0"
-    run = _apply(project)
+    assert apply_robot(project, "    kinematic: true\n    gravity: false\n").code == 0
+    assert field(project, "bot/base/arm", "Rigidbody", "m_IsKinematic") == "1"
+    assert field(project, "bot/base/arm", "Rigidbody", "m_UseGravity") == "0"
+    run = apply_robot(project)
     assert run.code == 0, run.err
     assert "update bot/base/arm (robot bot)" in run.out
     for link in ("bot/base", "bot/base/arm"):
-        assert _field(project, link, "Rigidbody", "m_IsKinematic") == "0"
-        assert _field(project, link, "Rigidbody", "m_UseGravity") == "1"
-    assert _apply(project, "", "--check").code == 0
+        assert field(project, link, "Rigidbody", "m_IsKinematic") == "0"
+        assert field(project, link, "Rigidbody", "m_UseGravity") == "1"
+    assert apply_robot(project, "", "--check").code == 0
 
 
 def test_a_switch_flipped_in_unity_is_drift_put_back(project: Path) -> None:
-    assert _apply(project).code == 0
+    assert apply_robot(project).code == 0
     scene = project / SCENE
     text = scene.read_text()
     assert text.count("m_IsKinematic: 0") == 2
     scene.write_text(text.replace("m_IsKinematic: 0", "m_IsKinematic: 1"))
-    assert _apply(project, "", "--check").code != 0
-    assert _apply(project).code == 0
+    assert apply_robot(project, "", "--check").code != 0
+    assert apply_robot(project).code == 0
     assert scene.read_text() == text

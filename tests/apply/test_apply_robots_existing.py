@@ -5,13 +5,23 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
 from pathlib import Path
 
 import pytest
-import test_apply_robot_models as models
-from helpers import build_tree, require, run_cli, snapshot
-from test_apply_robots import HEADER, INERTIAL, SCENE, URDF
+from helpers import run_cli, snapshot
+from robot_helpers import (
+    BOT_URDF,
+    HEADER,
+    MESH_MANIFEST,
+    MESH_URDF,
+    SCENE,
+    apply,
+    apply_manifest,
+    apply_refused,
+    copy_meshes,
+    inertial,
+    init_project,
+)
 
 from unityscaffold.unity.catalog import rossharp_catalog
 from unityscaffold.unity.scene import SceneDocument
@@ -19,8 +29,7 @@ from unityscaffold.unity.scene import SceneDocument
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    return build_tree(tmp_path / "p", {"ros/bot.urdf": URDF})
+    return init_project(tmp_path, {"ros/bot.urdf": BOT_URDF})
 
 
 def _by_hand(project: Path, path: str, class_name: str) -> None:
@@ -34,9 +43,8 @@ def _hand_import(project: Path, body: str | None = "") -> None:
     """The robot apply imports, as if imported by hand: every fileID apply gave it (and its
     references) renumbered, as Unity's own are random, and no lock (``body``: what follows
     the manifest's header; None: the manifest is there)."""
-    if body is not None:
-        (project / "robot.yaml").write_text(HEADER + body)
-    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    run = apply(project) if body is None else apply_manifest(project, HEADER + body)
+    assert run.code == 0, run.err
     lock = json.loads((project / "robot.lock.json").read_text())
     ids = lock["robots"][SCENE]["bot"]
     _renumber(project / SCENE, {old: 1000 + 7 * n for n, old in enumerate(ids)})
@@ -57,40 +65,40 @@ def test_a_robot_imported_by_hand_is_adopted_with_its_fileids_and_nothing_change
 ) -> None:
     _hand_import(project)
     scene = (project / SCENE).read_bytes()
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply(project)
     assert run.code == 0, run.err
     assert "adopt robot bot, imported by hand (16 objects)" in run.out
     assert [line for line in run.out.splitlines() if "(robot bot)" in line] == []
     assert (project / SCENE).read_bytes() == scene
     before = snapshot(project)
-    again = run_cli("apply", str(project / "robot.yaml"))
+    again = apply(project)
     assert again.code == 0 and "wrote 0 files" in again.out, again.out
     assert snapshot(project) == before
-    assert run_cli("apply", str(project / "robot.yaml"), "--check").code == 0
+    assert apply(project, "--check").code == 0
 
 
 def test_an_adopted_robot_follows_its_urdf_in_place_as_one_apply_imported(
     project: Path,
 ) -> None:
     _hand_import(project)
-    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert apply(project).code == 0
     ids = {go.path: go.file_id for _, go in SceneDocument.load(project / SCENE).tree()}
     (project / "ros/bot.urdf").write_text(
-        URDF.replace('<mass value="1"/>', '<mass value="3"/>').replace(
+        BOT_URDF.replace('<mass value="1"/>', '<mass value="3"/>').replace(
             "</robot>",
-            f'<link name="tool">{INERTIAL.format(mass=1)}</link>'
+            f'<link name="tool">{inertial(1, (1, 2, 3))}</link>'
             '<joint name="t" type="fixed"><parent link="arm"/><child link="tool"/></joint>'
             "</robot>",
         )
     )
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply(project)
     assert run.code == 0, run.err
     assert "update bot/base/arm (robot bot)" in run.out
     assert "import robot bot (3 new objects)" in run.out  # the tool link
     now = {go.path: go.file_id for _, go in SceneDocument.load(project / SCENE).tree()}
     assert {path: now[path] for path in ids} == ids
     before = snapshot(project)
-    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert apply(project).code == 0
     assert snapshot(project) == before
 
 
@@ -114,15 +122,12 @@ def test_a_robot_imported_by_hand_that_is_not_the_urdfs_is_refused_at_its_first_
     text = (project / SCENE).read_text()
     assert edit[0] in text
     (project / SCENE).write_text(text.replace(*edit, 1))
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.out + run.err
+    run = apply_refused(project)
     assert (
         "robot.yaml:6:5: error: the robot imported by hand at 'bot' in Assets/Scenes/Main.unity "
         f"is not the import of bot.urdf: {difference}" in run.err
     )
     assert "hint: apply takes over a robot imported in Unity's editor only when" in run.err
-    assert snapshot(project) == before
 
 
 def test_a_robot_imported_by_hand_missing_a_component_is_refused(project: Path) -> None:
@@ -135,7 +140,7 @@ def test_a_robot_imported_by_hand_missing_a_component_is_refused(project: Path) 
     document = text.index(f"--- !u!114 &{inertial.file_id}\n")
     text = text[:document] + text[text.index("--- ", document + 4) :]
     (project / SCENE).write_text(text)
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply(project)
     assert run.code == 2, run.out + run.err
     assert "'bot/base/arm' has no UrdfInertial after the Transform and UrdfLink, Rigidbody" in (
         run.err
@@ -144,44 +149,33 @@ def test_a_robot_imported_by_hand_missing_a_component_is_refused(project: Path) 
 
 def test_a_bare_object_with_urdfrobot_is_refused_as_not_the_import(project: Path) -> None:
     _by_hand(project, "bot", "UrdfRobot")
-    (project / "robot.yaml").write_text(HEADER)
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.out + run.err
+    run = apply_refused(project, HEADER)
     assert "is not the import of bot.urdf: 'bot' has no child 'Plugins'" in run.err
-    assert snapshot(project) == before
 
 
 def test_an_object_that_is_no_robot_where_the_robot_goes_is_refused(project: Path) -> None:
-    (project / "robot.yaml").write_text(HEADER + "    gameobject: Main Camera\n")
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.out + run.err
+    run = apply_refused(project, HEADER + "    gameobject: Main Camera\n")
     assert (
         "robot.yaml:7:17: error: Assets/Scenes/Main.unity already has a GameObject "
         "'Main Camera' (Transform, Camera, AudioListener), which is not a robot" in run.err
     )
     assert "hint: rename or move that GameObject in Unity" in run.err
-    assert snapshot(project) == before
 
 
 def test_a_robot_under_an_object_of_its_name_is_refused_only_there(project: Path) -> None:
     """Only the robot's own place counts: a same-named object elsewhere is another path."""
     _by_hand(project, "World/bot", "UrdfLink")
-    (project / "robot.yaml").write_text(HEADER + "    gameobject: World/bot\n")
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply_manifest(project, HEADER + "    gameobject: World/bot\n")
     assert run.code == 2 and "'World/bot' (Transform, UrdfLink), which is not a robot" in run.err
-    (project / "robot.yaml").write_text(HEADER)
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply_manifest(project, HEADER)
     assert run.code == 0, run.err
 
 
 def test_a_robot_apply_made_is_its_own_even_without_the_lock(project: Path) -> None:
-    (project / "robot.yaml").write_text(HEADER)
-    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert apply_manifest(project, HEADER).code == 0
     (project / "robot.lock.json").unlink()
     scene = (project / SCENE).read_bytes()
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply(project)
     assert run.code == 0, run.err
     assert (project / SCENE).read_bytes() == scene
 
@@ -191,14 +185,13 @@ def test_the_robots_root_takes_the_name_its_gameobject_path_gives(project: Path)
         "    gameobject: World/Robot\n"
         "components:\n  - {script: JointStateWriter, gameobject: World/Robot/base/arm}\n"
     )
-    (project / "robot.yaml").write_text(HEADER + body)
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply_manifest(project, HEADER + body)
     assert run.code == 0, run.err
     scene = SceneDocument.load(project / SCENE)
     assert scene.find_gameobject("World/Robot").name == "Robot"
     assert [go.name for go in scene.children(scene.find_gameobject("World"))] == ["Robot"]
     before = snapshot(project)
-    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert apply(project).code == 0
     assert snapshot(project) == before
 
 
@@ -208,15 +201,8 @@ def test_a_robot_with_stl_meshes_imported_by_hand_is_refused_at_its_prefab(
     """ROS#'s STL post-processor gives its prefab's objects random fileIDs, which the
     instances in the scene name; apply's own prefab has others, so such a robot is not
     taken over (the prefab, differing from apply's, is a file edited by hand first)."""
-    require((models.NIRYO / "G1_Rod.STL").is_file(), "the vendored niryo meshes")
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    project = build_tree(
-        tmp_path / "p", {"ros/bot.urdf": models.URDF, "robot.yaml": models.MANIFEST}
-    )
-    (project / "ros/desc/meshes").mkdir(parents=True)
-    shutil.copy(models.NIRYO / "G1_Rod.STL", project / "ros/desc/meshes")
-    for name in ("l_finger.dae", "l_finger_color.png"):
-        shutil.copy(models.FINGER / name, project / "ros/desc/meshes")
+    project = init_project(tmp_path, {"ros/bot.urdf": MESH_URDF, "robot.yaml": MESH_MANIFEST})
+    copy_meshes(project, ("G1_Rod.STL", "l_finger.dae", "l_finger_color.png"))
     _hand_import(project, None)
     prefab = project / "Assets/Urdf/bot/desc/meshes/G1_Rod.prefab"
     ids = [int(i) for i in re.findall(r"^--- !u!\d+ &(\d+)", prefab.read_text(), re.M)]
@@ -224,10 +210,9 @@ def test_a_robot_with_stl_meshes_imported_by_hand_is_refused_at_its_prefab(
     _renumber(prefab, renumbered)
     _renumber(project / SCENE, renumbered)
     before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply(project)
     assert run.code != 0 and "G1_Rod.prefab" in run.out + run.err
-    run = run_cli("apply", str(project / "robot.yaml"), "--force")
-    assert run.code == 2, run.out + run.err
+    run = apply_refused(project, None, "--force")
     assert (
         "'bot/base/Visuals/unnamed/G1_Rod' is an instance of ROS#'s STL prefab "
         "Assets/Urdf/bot/desc/meshes/G1_Rod.prefab, whose objects are not the ones of the "
@@ -237,13 +222,9 @@ def test_a_robot_with_stl_meshes_imported_by_hand_is_refused_at_its_prefab(
 
 
 def test_a_robot_imported_by_hand_beside_the_one_apply_imported_is_refused(project: Path) -> None:
-    (project / "robot.yaml").write_text(HEADER)
-    assert run_cli("apply", str(project / "robot.yaml")).code == 0
+    assert apply_manifest(project, HEADER).code == 0
     _by_hand(project, "Second", "UrdfRobot")
     scene = project / SCENE
     scene.write_text(scene.read_text().replace("  m_Name: Second\n", "  m_Name: bot\n"))
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.out + run.err
+    run = apply_refused(project)
     assert "robot.yaml:6:5: error: Assets/Scenes/Main.unity has 2 GameObjects at 'bot'" in run.err
-    assert snapshot(project) == before

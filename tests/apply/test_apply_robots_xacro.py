@@ -10,8 +10,8 @@ import sys
 from pathlib import Path
 
 import pytest
-from helpers import build_tree, require, run_cli, snapshot
-from test_apply_robots import URDF
+from helpers import require, snapshot
+from robot_helpers import BOT_URDF, HEADER, ROBOTS, apply_manifest, apply_refused, init_project
 
 from tests.cli.noop_support import records, scaffold
 from unityscaffold.cli import _app
@@ -51,38 +51,26 @@ PARTS = """<?xml version="1.0"?>
   </xacro:macro>
 </robot>
 """
-HEADER = """\
-version: 1
-ros: 2
-project: .
-scene: Assets/Scenes/Main.unity
-robots:
-"""
 ENTRY = (
     f"  - urdf: {XACRO}\n"
     "    packages: {bot_description: ros/bot_description}\n"
     "    args: {name: bot}\n"
 )
+MANIFEST = ROBOTS + ENTRY
 
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    files = {"ros/bot.urdf": URDF, XACRO: MAIN, "ros/bot_description/urdf/parts.xacro": PARTS}
-    return build_tree(tmp_path / "p", files)
-
-
-def _apply(project: Path, entry: str, *extra: str):  # type: ignore[no-untyped-def]
-    (project / "robot.yaml").write_text(HEADER + entry)
-    return run_cli("apply", str(project / "robot.yaml"), *extra)
+    files = {"ros/bot.urdf": BOT_URDF, XACRO: MAIN, "ros/bot_description/urdf/parts.xacro": PARTS}
+    return init_project(tmp_path, files)
 
 
 def test_a_xacro_robot_makes_the_project_its_plain_urdf_makes(project: Path) -> None:
-    assert _apply(project, "  - urdf: ros/bot.urdf\n").code == 0
+    assert apply_manifest(project, HEADER).code == 0
     from_urdf = snapshot(project)
-    check = _apply(project, ENTRY, "--check")
+    check = apply_manifest(project, MANIFEST, "--check")
     assert check.code == 0, check.out + check.err
-    run = _apply(project, ENTRY)
+    run = apply_manifest(project, MANIFEST)
     assert run.code == 0, run.err
     assert {k: v for k, v in snapshot(project).items() if k != "robot.yaml"} == {
         k: v for k, v in from_urdf.items() if k != "robot.yaml"
@@ -101,7 +89,7 @@ def test_an_edit_to_an_included_file_is_seen_by_the_next_check(
     planned: list[list[str]] = []
     real = _app.run_cli
     monkeypatch.setattr(_app, "run_cli", lambda args: planned.append(args) or real(args))
-    (project / "robot.yaml").write_text(HEADER + ENTRY)
+    (project / "robot.yaml").write_text(MANIFEST)
     assert scaffold(capsysbinary, "apply")[0] == 0
     assert scaffold(capsysbinary, "apply", "--check")[0] == 0
     assert scaffold(capsysbinary, "apply", "--check")[0] == 0
@@ -155,25 +143,18 @@ def test_a_xacro_mistake_is_a_located_error_and_nothing_is_written(
 ) -> None:
     xacro = project / XACRO
     xacro.write_text(change(MAIN))
-    (project / "robot.yaml").write_text(HEADER + ENTRY)
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2 and message in run.err, run.err
+    run = apply_refused(project, MANIFEST)
+    assert message in run.err, run.err
     assert "Traceback" not in run.err and "hint:" in run.err
-    assert snapshot(project) == before
 
 
 def test_without_the_xacro_package_the_error_names_the_extra_to_install(
     project: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setitem(sys.modules, "xacro", None)  # what an import finds when it is missing
-    (project / "robot.yaml").write_text(HEADER + ENTRY)
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run.err
+    run = apply_refused(project, MANIFEST)
     assert "robot.yaml:6:11: error:" in run.err and "the xacro package is not installed" in run.err
     assert "pip install 'unityscaffold[xacro]'" in run.err
-    assert snapshot(project) == before
 
 
 def test_xacros_warnings_are_notes_naming_the_file_and_never_reach_stderr(
@@ -186,7 +167,7 @@ def test_xacros_warnings_are_notes_naming_the_file_and_never_reach_stderr(
             '<xacro:property name="pi" value="3"/>\n  <xacro:property name="radius"',
         )
     )
-    run = _apply(project, ENTRY)
+    run = apply_manifest(project, MANIFEST)
     assert run.code == 0, run.err
     assert run.err == ""
     assert f"note: {parts}: xacro warns: redefining global symbol: pi" in run.out, run.out
