@@ -7,26 +7,24 @@ removed one removes it, and a second apply writes nothing."""
 from __future__ import annotations
 
 import re
-import shutil
 from pathlib import Path
 
 import pytest
-from helpers import binary_stl, build_tree, require, run_cli, snapshot, text_diff, updating
-from test_apply_robot_models import FINGER, INERTIAL, NIRYO, SCENE
+from helpers import binary_stl, snapshot, text_diff, updating
+from robot_helpers import (
+    HEADER,
+    apply,
+    copy_meshes,
+    inertial,
+    init_project,
+    meta_guid,
+    prefab_instances,
+)
 
-from unityscaffold.unity.scene import SceneDocument
 from unityscaffold.urdf.stl import FACETS_PER_MESH
 
 GOLDEN = Path(__file__).parent / "golden" / "robot_materials"
-MANIFEST = """\
-version: 1
-ros: 2
-project: .
-scene: Assets/Scenes/Main.unity
-robots:
-  - urdf: ros/bot.urdf
-    packages: {desc: ros/desc}
-"""
+MANIFEST = HEADER + "    packages: {desc: ros/desc}\n"
 STL = '<mesh filename="package://desc/meshes/{}.STL"/>'
 DAE = '<mesh filename="package://desc/meshes/l_finger.dae"/>'
 # the three ways a visual names its material: a top-level definition, one of its own, unnamed
@@ -48,7 +46,7 @@ def urdf(materials: dict[str, str]) -> str:
     for i, (name, material) in enumerate(materials.items()):
         stl = STL.format("big" if name == "rgba" else "G1_Rod")
         links.append(
-            f'<link name="{name}">{INERTIAL}\n  {visual(stl, material)}\n'
+            f'<link name="{name}">{inertial()}\n  {visual(stl, material)}\n'
             f"  {visual(DAE, material)}\n</link>"
         )
         if i:
@@ -65,43 +63,22 @@ def urdf(materials: dict[str, str]) -> str:
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
-    require(
-        (NIRYO / "G1_Rod.STL").is_file() and (FINGER / "l_finger.dae").is_file(),
-        "the vendored meshes",
-    )
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    root = build_tree(tmp_path / "p", {"ros/bot.urdf": urdf(MATERIALS), "robot.yaml": MANIFEST})
-    meshes = root / "ros/desc/meshes"
-    meshes.mkdir(parents=True)
-    shutil.copy(NIRYO / "G1_Rod.STL", meshes / "G1_Rod.STL")
+    root = init_project(tmp_path, {"ros/bot.urdf": urdf(MATERIALS), "robot.yaml": MANIFEST})
+    meshes = copy_meshes(root, ("G1_Rod.STL", "l_finger.dae"))
     # one facet past what one Mesh asset takes: ROS# cuts it in two
     binary_stl(meshes / "big.STL", FACETS_PER_MESH + 1)
-    shutil.copy(FINGER / "l_finger.dae", meshes / "l_finger.dae")
     return root
-
-
-def apply(project: Path, *extra: str):  # type: ignore[no-untyped-def]
-    return run_cli("apply", str(project / "robot.yaml"), *extra)
 
 
 def instances(project: Path) -> str:
     """The scene's PrefabInstance documents, each headed by the path of its visual."""
-    scene = SceneDocument.load(project / SCENE)
-    parts = []
-    for _, go in scene.tree():
-        if go.is_prefab_instance:
-            parent = scene.hierarchy.nodes[go.file_id].parent
-            path = scene.gameobject(parent).path if parent else ""
-            text = scene.document(go.file_id).text
-            parts.append((path, f"# {path}\n{text}"))
-    return "".join(text for _, text in sorted(parts))
+    return "".join(f"# {path}\n{text}" for path, text in sorted(prefab_instances(project)))
 
 
 def material_guids(project: Path) -> dict[str, str]:
     folder = project / "Assets/Urdf/bot/Materials"
     return {
-        meta.name.removesuffix(".mat.meta"): re.search(r"guid: (\w+)", meta.read_text()).group(1)  # type: ignore[union-attr]
-        for meta in folder.glob("*.mat.meta")
+        meta.name.removesuffix(".mat.meta"): meta_guid(meta) for meta in folder.glob("*.mat.meta")
     }
 
 

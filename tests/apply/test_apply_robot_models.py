@@ -4,78 +4,34 @@ import cannot make as checked refused at its element with nothing written."""
 
 from __future__ import annotations
 
-import os
-import re
-import shutil
 from pathlib import Path
 
 import pytest
-from helpers import build_tree, require, run_cli, snapshot
-
-from unityscaffold.unity.scene import SceneDocument
-
-REPO = Path(__file__).resolve().parents[2]
-VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
-NIRYO = VENDOR / "unity-robotics-hub" / "niryo-gripper1"
-FINGER = VENDOR / "ros-sharp/samples/gazebo-ros2-step1/Urdf/file_server2/urdf_tutorial/meshes"
-SCENE = "Assets/Scenes/Main.unity"
-MANIFEST = """\
-version: 1
-ros: 2
-project: .
-scene: Assets/Scenes/Main.unity
-robots:
-  - urdf: ros/bot.urdf
-    packages: {desc: ros/desc}
-    convex: true
-"""
-INERTIAL = (
-    '<inertial><mass value="1"/>'
-    '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+from helpers import snapshot
+from robot_helpers import (
+    FINGER,
+    MESH_MANIFEST,
+    MESH_URDF,
+    SCENE,
+    apply,
+    copy_meshes,
+    init_project,
+    meta_guid,
+    prefab_instances,
 )
-URDF = f"""<robot name="bot">
-  <link name="base">{INERTIAL}
-    <visual><geometry><mesh filename="package://desc/meshes/G1_Rod.STL"/></geometry></visual>
-    <collision><geometry><mesh filename="package://desc/meshes/G1_Rod.STL"/></geometry></collision>
-  </link>
-  <link name="finger">{INERTIAL}
-    <visual><geometry><mesh filename="package://desc/meshes/l_finger.dae"/></geometry></visual>
-    <collision><geometry><mesh filename="package://desc/meshes/l_finger.dae"/></geometry></collision>
-  </link>
-  <joint name="j" type="fixed"><parent link="base"/><child link="finger"/></joint>
-</robot>
-"""
 
 
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
-    require(
-        (NIRYO / "G1_Rod.STL").is_file() and (FINGER / "l_finger.dae").is_file(),
-        "the vendored meshes",
-    )
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    root = build_tree(tmp_path / "p", {"ros/bot.urdf": URDF, "robot.yaml": MANIFEST})
-    meshes = root / "ros/desc/meshes"
-    meshes.mkdir(parents=True)
-    shutil.copy(NIRYO / "G1_Rod.STL", meshes / "G1_Rod.STL")
-    for name in ("l_finger.dae", "l_finger_color.png"):
-        shutil.copy(FINGER / name, meshes / name)
+    root = init_project(tmp_path, {"ros/bot.urdf": MESH_URDF, "robot.yaml": MESH_MANIFEST})
+    copy_meshes(root, ("G1_Rod.STL", "l_finger.dae", "l_finger_color.png"))
     return root
 
 
-def apply(project: Path, *extra: str):  # type: ignore[no-untyped-def]
-    return run_cli("apply", str(project / "robot.yaml"), *extra)
-
-
 def instances(project: Path) -> dict[str, str]:
-    """Each prefab instance's document by the path of the object it sits under."""
-    scene = SceneDocument.load(project / SCENE)
-    found = {}
-    for _, go in scene.tree():
-        if go.is_prefab_instance:
-            parent = scene.hierarchy.nodes[go.file_id].parent
-            found[scene.gameobject(parent).path if parent else ""] = scene.document(go.file_id).text
-    return found
+    """Each prefab instance's document by the path of the object it sits under (one visual and
+    one collision a link here, so the paths are distinct)."""
+    return dict(prefab_instances(project))
 
 
 def test_mesh_geometries_are_instances_of_the_stl_prefab_and_the_copied_model(
@@ -103,7 +59,7 @@ def test_mesh_geometries_are_instances_of_the_stl_prefab_and_the_copied_model(
         "bot/base/finger/Visuals/unnamed",
     ]
     guid = {
-        name: re.search(r"guid: (\w+)", (folder / f"{name}.meta").read_text()).group(1)  # type: ignore[union-attr]
+        name: meta_guid(folder / f"{name}.meta")
         for name in ("G1_Rod.prefab", "G1_Rod_0.asset", "l_finger.dae")
     }
     rod = found["bot/base/Collisions/unnamed"]
@@ -124,7 +80,7 @@ def test_mesh_geometries_are_instances_of_the_stl_prefab_and_the_copied_model(
 
 def test_a_mesh_the_urdf_drops_leaves_no_instance_behind_and_comes_back(project: Path) -> None:
     assert apply(project).code == 0
-    urdf = URDF.replace(
+    urdf = MESH_URDF.replace(
         '<mesh filename="package://desc/meshes/l_finger.dae"/>', '<sphere radius="0.1"/>'
     )
     (project / "ros/bot.urdf").write_text(urdf)
@@ -136,7 +92,7 @@ def test_a_mesh_the_urdf_drops_leaves_no_instance_behind_and_comes_back(project:
     assert "l_finger" not in text
     assert not (project / "Assets/Urdf/bot/desc/meshes/l_finger.dae").exists()
     # and back: the spheres go, the instances come again
-    (project / "ros/bot.urdf").write_text(URDF)
+    (project / "ros/bot.urdf").write_text(MESH_URDF)
     assert apply(project).code == 0
     assert len(instances(project)) == 4 and "m_Name: Sphere" not in (project / SCENE).read_text()
     assert apply(project, "--check").code == 0
@@ -146,7 +102,7 @@ def test_a_model_the_import_cannot_make_as_checked_is_refused_and_nothing_writte
     project: Path,
 ) -> None:
     (project / "ros/desc/meshes/arm.obj").write_text("o arm\n")
-    urdf = URDF.replace(
+    urdf = MESH_URDF.replace(
         'meshes/l_finger.dae"/></geometry></visual>', 'meshes/arm.obj"/></geometry></visual>'
     )
     (project / "ros/bot.urdf").write_text(urdf)

@@ -20,7 +20,6 @@ with the part of the scene it covers; the comparison covers everything else.
 from __future__ import annotations
 
 import math
-import os
 import re
 import shutil
 import struct
@@ -29,15 +28,14 @@ from pathlib import Path
 
 import pytest
 from helpers import require, run_cli
+from robot_helpers import R2D2
 
 from unityscaffold.unity import SceneDocument
 from unityscaffold.unity.catalog import rossharp_catalog
 from unityscaffold.unity.index import GameObject
 from unityscaffold.unity.setvalue import component_label
 
-REPO = Path(__file__).resolve().parents[2]
-VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
-STEP = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
+STEP = R2D2
 START = STEP / "Scenes" / "gazebo_simulation_scene_ROS2_1_Camera.unity"
 COMPLETED = STEP / "Scenes" / "Completed" / "gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
 ASSETS = STEP / "Urdf" / "file_server2"

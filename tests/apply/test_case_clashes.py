@@ -6,19 +6,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from helpers import build_tree, run_cli, snapshot
+from robot_helpers import HEADER, apply, apply_refused, init_project
 
 from unityscaffold.apply._case_clashes import check_case_clashes
 from unityscaffold.errors import UserError
-
-MANIFEST = """\
-version: 1
-ros: 2
-project: .
-scene: Assets/Scenes/Main.unity
-robots:
-  - urdf: ros/bot.urdf
-"""
 
 
 def _urdf(first: str, second: str) -> str:
@@ -34,26 +25,22 @@ def _urdf(first: str, second: str) -> str:
 
 
 def _project(tmp_path: Path, urdf: str) -> Path:
-    assert run_cli("init", str(tmp_path / "p"), "--ros", "2").code == 0
-    return build_tree(tmp_path / "p", {"ros/bot.urdf": urdf, "robot.yaml": MANIFEST})
+    return init_project(tmp_path, {"ros/bot.urdf": urdf, "robot.yaml": HEADER})
 
 
 def test_two_urdf_materials_named_apart_only_by_case_are_refused_and_nothing_is_written(
     tmp_path: Path,
 ) -> None:
     project = _project(tmp_path, _urdf("Blue", "blue"))
-    before = snapshot(project)
-    run = run_cli("apply", str(project / "robot.yaml"))
-    assert run.code == 2, run
+    run = apply_refused(project)
     assert "Assets/Urdf/bot/Materials/Blue.mat" in run.err, run.err
     assert "Assets/Urdf/bot/Materials/blue.mat" in run.err, run.err
     assert "differ only in letter case" in run.err, run.err
-    assert snapshot(project) == before
 
 
 def test_materials_with_different_names_are_applied(tmp_path: Path) -> None:
     project = _project(tmp_path, _urdf("Blue", "red"))
-    run = run_cli("apply", str(project / "robot.yaml"))
+    run = apply(project)
     assert run.code == 0, run
     materials = project / "Assets/Urdf/bot/Materials"
     assert {p.name for p in materials.glob("*.mat")} >= {"Blue.mat", "red.mat"}

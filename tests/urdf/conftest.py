@@ -9,16 +9,11 @@ fails under CI=true.
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import pytest
 from helpers import require
-
-REPO = Path(__file__).resolve().parents[2]
-VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
-R2D2 = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
-NIRYO = VENDOR / "unity-robotics-hub" / "niryo-gripper1"
+from robot_helpers import NIRYO, R2D2
 
 
 @pytest.fixture(scope="session")

@@ -8,16 +8,14 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from robot_helpers import inertial
 
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity.values import InlineMap
 from unityscaffold.urdf import import_robot, parse_urdf
 from unityscaffold.urdf.objects import ComponentRef, ImportedComponent, importer_tree
 
-INERTIAL = (
-    '<inertial><mass value="1"/>'
-    '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
-)
+INERTIAL = inertial()
 
 
 def robot(tmp_path: Path, joints: str, *, child_inertial: bool = True) -> Path:

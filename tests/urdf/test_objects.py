@@ -7,6 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
+from robot_helpers import inertial
 
 from unityscaffold.unity import SceneDocument
 from unityscaffold.unity.catalog import rossharp_catalog
@@ -17,10 +18,7 @@ from unityscaffold.urdf.transforms import f32
 
 #: What the tutorial's author added by hand after importing (not the importer's).
 HAND_MADE = {"r2d2/base_link/head/box/CameraPlane"}
-INERTIAL = (
-    '<inertial><mass value="1"/>'
-    '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
-)
+INERTIAL = inertial()
 
 
 def lines(tree: ImportedObject) -> list[str]:

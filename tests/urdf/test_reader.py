@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 
 import pytest
+from robot_helpers import inertial
 
 from unityscaffold.urdf import parse_urdf, read_urdf
 from unityscaffold.urdf.model import (
@@ -23,10 +24,7 @@ from unityscaffold.urdf.model import (
     Sphere,
 )
 
-INERTIAL = (
-    '<inertial><mass value="2"/>'
-    '<inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0" izz="3"/></inertial>'
-)
+INERTIAL = inertial(2, (1, 2, 3))
 
 
 def robot(body: str, name: str = "bot") -> bytes:
