@@ -139,6 +139,30 @@ def apply_refused(project: Path, manifest: str | None = None, *extra: str) -> Ru
     return run
 
 
+def apply_writes_nothing(project: Path) -> Run:
+    """Apply the ``robot.yaml`` an earlier apply of the test wrote, which must succeed and leave
+    every file as it was: apply is idempotent, the promise that keeps scenes reviewable in git.
+    The run is returned for the test to check what it says."""
+    before = snapshot(project)
+    run = apply(project)
+    assert run.code == 0, run.out + run.err
+    assert snapshot(project) == before
+    return run
+
+
+def drift_is_put_back(project: Path, old: str, new: str, count: int = 1) -> None:
+    """The scene edited as Unity's Inspector would (``count`` of ``old`` made ``new``; -1: all)
+    where the import decides: ``apply --check`` must report it and apply restore the scene to
+    the byte, as the import is the truth for what it owns."""
+    scene = project / SCENE
+    text = scene.read_text()
+    assert old in text, f"{old!r} is not in the scene"
+    scene.write_text(text.replace(old, new, count))
+    assert apply(project, "--check").code != 0
+    assert apply(project).code == 0
+    assert scene.read_text() == text
+
+
 def component(scene: SceneDocument, path: str, class_name: str) -> SceneComponent:
     """The first ``class_name`` component of the GameObject at ``path`` (which must be the only
     one there), as Unity's ``GetComponent`` finds it."""

@@ -18,7 +18,9 @@ from robot_helpers import (
     apply_manifest,
     apply_refused,
     apply_robot,
+    apply_writes_nothing,
     component,
+    drift_is_put_back,
     field,
     init_project,
     meta_guid,
@@ -76,10 +78,8 @@ def test_a_robot_is_built_as_rossharps_importer_builds_it(project: Path) -> None
 
 def test_a_second_apply_writes_nothing_and_check_is_clean(project: Path) -> None:
     assert apply_robot(project).code == 0
-    before = snapshot(project)
-    again = apply_robot(project)
-    assert again.code == 0 and "the project matches the manifest" in again.out
-    assert snapshot(project) == before
+    again = apply_writes_nothing(project)
+    assert "the project matches the manifest" in again.out
     assert apply_robot(project, "", "--check").code == 0
 
 
@@ -111,12 +111,7 @@ def test_a_changed_urdf_updates_the_robot_in_place_keeping_fileids(project: Path
 
 def test_drift_in_what_the_urdf_decides_is_reported_and_put_back(project: Path) -> None:
     assert apply_robot(project).code == 0
-    path = project / SCENE
-    text = path.read_text()
-    path.write_text(text.replace("  m_Mass: 2\n", "  m_Mass: 5\n", 1))
-    assert apply_robot(project, "", "--check").code != 0
-    assert apply_robot(project).code == 0
-    assert path.read_text() == text
+    drift_is_put_back(project, "  m_Mass: 2\n", "  m_Mass: 5\n")
 
 
 def test_what_the_user_adds_to_a_link_is_kept(project: Path) -> None:
@@ -129,9 +124,7 @@ def test_what_the_user_adds_to_a_link_is_kept(project: Path) -> None:
     tree = run_cli("scene", "ls", str(project / SCENE)).out
     assert "Extra  [Transform, BoxCollider]" in tree
     assert "HingeJointAngleCalculator, JointStateWriter]" in tree
-    before = snapshot(project)
-    assert apply_robot(project, body).code == 0
-    assert snapshot(project) == before
+    apply_writes_nothing(project)
 
 
 PRISMATIC = BOT_URDF.replace('type="revolute"', 'type="prismatic"').replace(
@@ -169,21 +162,14 @@ def test_a_prismatic_joint_gets_rossharps_configurable_joint_and_limits_manager(
         "  PositionLimitMin: -0.05\n  PositionLimitMax: 0.3\n  Tolerance: 0.01\n"
         in (project / SCENE).read_text()
     )
-    before = snapshot(project)
-    again = apply_robot(project)
-    assert again.code == 0 and snapshot(project) == before
+    apply_writes_nothing(project)
     assert apply_robot(project, "", "--check").code == 0
 
 
 def test_a_changed_prismatic_limit_is_put_back_by_apply(project: Path) -> None:
     build_tree(project, {"ros/bot.urdf": PRISMATIC})
     assert apply_robot(project).code == 0
-    path = project / SCENE
-    text = path.read_text()
-    path.write_text(text.replace("  m_XMotion: 1\n", "  m_XMotion: 2\n", 1))
-    assert apply_robot(project, "", "--check").code != 0
-    assert apply_robot(project).code == 0
-    assert path.read_text() == text
+    drift_is_put_back(project, "  m_XMotion: 1\n", "  m_XMotion: 2\n")
 
 
 def test_a_planar_joint_with_an_unchecked_normal_is_refused_at_its_joint(project: Path) -> None:
@@ -303,9 +289,7 @@ def test_a_link_gone_from_the_urdf_is_removed_with_everything_apply_made_under_i
     assert "remove bot/base/arm (robot bot)" in run.out
     assert _tree(project)[:9] == TREE[:9]
     assert "arm" not in run_cli("scene", "ls", str(project / SCENE)).out
-    before = snapshot(project)
-    assert apply_robot(project).code == 0
-    assert snapshot(project) == before
+    apply_writes_nothing(project)
 
 
 def test_a_link_gone_from_the_urdf_stays_while_the_user_has_something_on_it(
@@ -392,6 +376,4 @@ def test_a_robot_goes_under_the_parent_its_path_names(project: Path) -> None:
         "      arm  [Transform, UrdfLink, Rigidbody, UrdfInertial, UrdfJointRevolute, "
         "HingeJoint, HingeJointLimitsManager, HingeJointAngleCalculator]" in listed
     )
-    before = snapshot(project)
-    assert apply_robot(project, "    gameobject: World/bot\n").code == 0
-    assert snapshot(project) == before
+    apply_writes_nothing(project)
