@@ -18,7 +18,7 @@ import random
 import socket
 import subprocess
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import ModuleType
@@ -36,6 +36,8 @@ STACK_SCRIPT = REPO / "scripts" / "ros2_stack.py"
 # Domain ids a session may claim: 0 is everyone's default, and past 101 the port numbers
 # DDS derives from the id run into the ephemeral range on Linux.
 DOMAIN_IDS = range(1, 101)
+# A request field no service type has (Rosbridge2.knows_services).
+PROBE_FIELD = "unityscaffold_probe"
 
 
 def stack_module() -> ModuleType:
@@ -126,6 +128,25 @@ class Rosbridge2:
             socket_.send(json.dumps({**request, "args": args or {}}))
             answer: dict[str, Any] = json.loads(socket_.recv(timeout=30))
             return answer
+
+    def knows_services(self, services: Collection[str]) -> bool:
+        """Whether rosbridge's own node has discovered every one of ``services``. rosbridge
+        refuses a call to a service its node has not seen ("Service ... does not exist"), and
+        rosapi, a node of its own, may list a service before it does. Each is asked with a call
+        carrying a field no request has: rosbridge refuses that only once it has found the
+        service, and before calling it, so no server ever sees it."""
+        answers: dict[str, str] = {}
+        with connect(self.url, open_timeout=10, max_size=None) as socket_:
+            for name in services:
+                args = {PROBE_FIELD: 0}
+                socket_.send(
+                    json.dumps({"op": "call_service", "service": name, "id": name, "args": args})
+                )
+            while len(answers) < len(services):
+                message = json.loads(socket_.recv(timeout=30))
+                if message.get("op") == "service_response":
+                    answers[str(message.get("id"))] = str(message.get("values"))
+        return all(f"does not have a field {PROBE_FIELD}" in answers[name] for name in services)
 
     def log_text(self) -> str:
         return "\n".join(p.read_text(errors="replace") for p in self.logs if p.exists())

@@ -151,9 +151,9 @@ def _run_pair(
     timeout: float,
     served: frozenset[str] = frozenset(),
 ) -> Outcome:
-    """Run the rclpy side and, once it says "ready" and rosapi lists every one of its
-    ``served`` services (rosbridge's node would refuse a call before it has discovered them),
-    the client, on ``work``'s plan files."""
+    """Run the rclpy side and, once it says "ready" and rosbridge's own node has discovered
+    every one of its ``served`` services (it refuses a call to one it has not seen, and rosapi's
+    listing does not tell: it is another node), the client, on ``work``'s plan files."""
     work.mkdir(parents=True, exist_ok=True)
     (work / "plan.json").write_text(json.dumps(plan))
     (work / "plan.txt").write_text(plan_lines)
@@ -162,16 +162,15 @@ def _run_pair(
     rclpy_side = bridge.ros2.run_node(DATA / node, *args)
     echo: Lines | None = None
 
-    def listed() -> bool:
-        return served <= set(bridge.call("/rosapi/services")["values"]["services"])
+    def discovered() -> bool:
+        return bridge.knows_services(sorted(served))
 
     try:
         # Not ready (it ended first): its output says why, and every type is then "no answer".
         if rclpy_side.wait_for(lambda line: line == "ready", timeout) and served:
-            wait_for("the rclpy services in rosapi", listed, timeout, bridge.logs)
+            wait_for("rosbridge to discover the rclpy services", discovered, timeout, bridge.logs)
         echo = start([*client, bridge.url, str(work / "plan.txt")])
     finally:
-        # A side that hangs is killed, and its output says so.
         node_output = rclpy_side.finish(timeout=timeout + 120)
         client_output = echo.finish() if echo else ""
     results = json.loads(result.read_text()) if result.exists() else {}

@@ -23,7 +23,9 @@ TIMEOUT = 60  # a guard against a hang only
 def _listed(bridge: Rosbridge2) -> bool:
     services = bridge.call("/rosapi/services")["values"]["services"]
     topics = bridge.call("/rosapi/topics")["values"]["topics"]
-    return "/stack/set" in services and "/stack/chatter" in topics
+    # rosapi is a node of its own: rosbridge's may not have discovered the service yet.
+    listed = "/stack/set" in services and "/stack/chatter" in topics
+    return listed and bridge.knows_services(["/stack/set"])
 
 
 def _receive(

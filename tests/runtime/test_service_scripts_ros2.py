@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import shutil
+from functools import partial
 from pathlib import Path
 
 from helpers import run_cli
@@ -66,10 +67,6 @@ def _values(lines: list[str], key: str) -> list[str]:
     return [line.split(" ", 1)[1] for line in lines if line.startswith(key + " ")]
 
 
-def _listed(bridge: Rosbridge2) -> bool:
-    return "/set_speed_limit" in bridge.call("/rosapi/services")["values"]["services"]
-
-
 def test_ros2_service_scripts_against_rclpy(
     rosbridge2: Rosbridge2,
     mcs: str,
@@ -85,9 +82,8 @@ def test_ros2_service_scripts_against_rclpy(
     try:
         assert node.wait_for(lambda line: line == "ready", TIMEOUT), node.finish()
         # The node exists; rosbridge's own node may not have discovered its service yet.
-        wait_for(
-            "/set_speed_limit in rosapi", lambda: _listed(rosbridge2), TIMEOUT, rosbridge2.logs
-        )
+        known = partial(rosbridge2.knows_services, ["/set_speed_limit"])
+        wait_for("rosbridge to discover /set_speed_limit", known, TIMEOUT, rosbridge2.logs)
         scenario = start([mono, str(exe), rosbridge2.url])
         node.wait_for(lambda line: line == "done", TIMEOUT + 30)
         scenario.wait_for(lambda line: line.startswith("client_response False"), TIMEOUT)
