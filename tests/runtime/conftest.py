@@ -119,9 +119,12 @@ def ros2(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Ros2]:
         stack.close()
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture()
 def rosbridge2(ros2: Ros2) -> Iterator[Rosbridge2]:
-    """rosbridge 2.x's websocket server and rosapi in the session's domain, with their defaults."""
+    """rosbridge 2.x's websocket server and rosapi in the session's domain, with their defaults,
+    for one test: a bridge shared by the session was seen to stop accepting clients after a test's
+    client left with a subscription open (its log then says "Tried to write to a closed
+    websocket" every second; rosbridge_suite#744, #947), failing every later test on it."""
     running = start_rosbridge2(ros2)
     try:
         yield running

@@ -80,9 +80,9 @@ def offers(ros2: Ros2) -> Iterator[dict[str, Any]]:
 
 @pytest.fixture(scope="module")
 def bridge(ros2: Ros2, offers: dict[str, Any]) -> Iterator[Rosbridge2]:
-    """A rosbridge 2.x of this module's own (a discover that asked rosapi 2.1.0 for details
-    would end it, and the session's shared bridge must not pay for such a regression), once
-    its rosapi sees the robot."""
+    """A rosbridge 2.x for this module's tests (a discover that asked rosapi 2.1.0 for details
+    would end it, and no other test must pay for such a regression), once its rosapi sees the
+    robot."""
     with running_rosbridge2(ros2) as running:
         wait_for("the robot's topics in rosapi", lambda: _rosapi_sees(running), 60, running.logs)
         yield running
