@@ -21,7 +21,7 @@ from tests.runtime.bridge import DATA, Bridge
 from tests.runtime.client import CSHARP, mcs_compile
 from tests.runtime.lines import Lines, start
 from tests.runtime.ros2 import Ros2, running_rosbridge2
-from tests.runtime.ros2_actions import DECIDED, lost_goal
+from tests.runtime.ros2_actions import DECIDED, lost_cancel, lost_goal
 from tests.runtime.runtime_helpers import SAMPLE_INTERFACES, SAMPLE_ROS2_INTERFACES
 
 TIMEOUT = 60  # seconds; a guard against a hang only
@@ -224,14 +224,18 @@ def _run_ros2(ros2: Ros2, mono: str, exe: Path, result: Path) -> Ros2Run:
 
 
 def _lost_by_rosbridge(run: Ros2Run) -> str:
-    """The goal rosbridge 2.x lost in ``run`` (tests/runtime/ros2_actions.py), or ""."""
+    """The goal or cancel rosbridge 2.x lost in ``run`` (tests/runtime/ros2_actions.py), or ""."""
     sent = [value.split(" ", 1)[0] for value in _values(run.lines, "client_sent")]
     answered = {
         value.split(" ", 1)[0]
         for key in ("client_feedback", "client_result")
         for value in _values(run.lines, key)
     }
-    return lost_goal(sent, run.seen["server_decided"], answered)
+    decided = run.seen["server_decided"]
+    cancelled = _values(run.lines, "client_cancel")
+    return lost_goal(sent, decided, answered) or lost_cancel(
+        sent, decided, cancelled, run.seen["server_cancel"]
+    )
 
 
 def test_ros2_action_scripts_against_rclpy(

@@ -19,7 +19,7 @@ from processes import wait_for
 from tests.runtime.client import CSHARP, mcs_compile
 from tests.runtime.lines import start
 from tests.runtime.ros2 import Ros2, running_rosbridge2
-from tests.runtime.ros2_actions import DECIDED, lost_goal
+from tests.runtime.ros2_actions import DECIDED, lost_cancel, lost_goal
 from tests.runtime.runtime_helpers import SAMPLE_ROS2_INTERFACES, write_code
 from unityscaffold.codegen import Options, generate
 from unityscaffold.interfaces.model import Dialect
@@ -92,14 +92,18 @@ def _run(ros2: Ros2, mono: str, exe: Path, result: Path) -> Ros2Run:
 
 
 def _lost_by_rosbridge(run: Ros2Run) -> str:
-    """The goal rosbridge 2.x lost in ``run`` (tests/runtime/ros2_actions.py), or ""."""
+    """The goal or cancel rosbridge 2.x lost in ``run`` (tests/runtime/ros2_actions.py), or ""."""
     sent = dict(s.split(" ", 1) for s in _values(run.lines, "client_sent"))  # id -> dock_id
     answered = {
         sent.get(value.split(" ", 1)[0], "")
         for key in ("client_feedback", "client_result")
         for value in _values(run.lines, key)
     }
-    return lost_goal(list(sent.values()), run.seen["server_decided"], answered)
+    decided = run.seen["server_decided"]
+    cancelled = {sent.get(goal_id, "") for goal_id in _values(run.lines, "client_cancel")}
+    return lost_goal(list(sent.values()), decided, answered) or lost_cancel(
+        list(sent.values()), decided, cancelled, run.seen["server_cancel"]
+    )
 
 
 def test_ros2_actions_goal_feedback_result_cancel_both_ways(
