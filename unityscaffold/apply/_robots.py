@@ -320,7 +320,7 @@ class _Writer:
         if isinstance(value, ComponentRef):
             return ObjectRef(self._component_id(value))
         if isinstance(value, MaterialRef):
-            guid = self.robot.guids[f"Materials/{value.name}.mat"]
+            guid = self.robot.guids[value.path]
             return AssetRef(_MATERIAL_FILE_ID, guid, 2)
         if value is CYLINDER_MESH:
             return ObjectRef(self._cylinder(obj))

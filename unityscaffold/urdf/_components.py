@@ -62,6 +62,11 @@ class MaterialRef:
 
     name: str
 
+    @property
+    def path(self) -> str:
+        """The ``.mat`` file's path in the robot's asset folder."""
+        return f"Materials/{self.name}.mat"
+
 
 @dataclass(frozen=True, slots=True)
 class _CylinderMesh:

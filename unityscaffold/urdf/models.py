@@ -49,7 +49,7 @@ from unityscaffold.unity.prefabinstance import (
 )
 from unityscaffold.unity.stlprefab import StlPrefab, prefab_meta, stl_prefab, stl_prefab_text
 from unityscaffold.urdf import transforms as t
-from unityscaffold.urdf._components import material_name
+from unityscaffold.urdf._components import MaterialRef, material_name
 from unityscaffold.urdf._packages import ResolvedMesh
 from unityscaffold.urdf.collada import ColladaFacts, read_collada
 from unityscaffold.urdf.model import Material, Mesh, Robot, Visual
@@ -203,16 +203,14 @@ class _Builder:
     ) -> ModelInstance | None:
         """A visual's instance with its URDF material on every renderer of the model, as
         ROS#'s ``UrdfMaterial.SetMaterial`` sets ``sharedMaterial`` on each."""
-        if resolved.relative.suffix.lower() == ".stl":
-            prefab = stl_prefab(resolved.relative.stem, self.stl_meshes[resolved])
+        prefab = self.assets[instance.source].prefab  # an STL's, made with its instance
+        if prefab is not None:
             renderers = tuple(part.renderer for part in prefab.parts)
         elif self._one_slot(mesh, self._facts(resolved.path), material):
             renderers = (_ROOT_RENDERER,)
         else:
             return None
-        mat = AssetObject(
-            f"Materials/{material_name(material)}.mat", MATERIAL_FILE_ID, _TYPE_NATIVE
-        )
+        mat = AssetObject(MaterialRef(material_name(material)).path, MATERIAL_FILE_ID, _TYPE_NATIVE)
         return instance.with_changes(material_modifications(renderers, mat))
 
     def _one_slot(self, mesh: Mesh, facts: ColladaFacts, material: Material) -> bool:
