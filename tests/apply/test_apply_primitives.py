@@ -7,24 +7,19 @@ fields naming Unity's built-in resources or the project's assets."""
 
 from __future__ import annotations
 
-import os
 import re
 from pathlib import Path
 
 import pytest
 from helpers import require, run_cli, snapshot
+from robot_helpers import R2D2
 
 from unityscaffold.manifest import _keys
 from unityscaffold.unity import builtins
 from unityscaffold.unity.scene import SceneDocument
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "unity" / "ros-sharp"
-REPO = Path(__file__).resolve().parents[2]
-VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "vendor"))
-COMPLETED = (
-    VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1" / "Scenes" / "Completed"
-    / "gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
-)  # fmt: skip
+COMPLETED = R2D2 / "Scenes" / "Completed" / "gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
 HEADER = "version: 1\nros: 2\nproject: .\nscene: Assets/Scenes/Main.unity\n"
 # The GUID of the Cube's material in ROS#'s Unity simulation scene.
 CUBE_MATERIAL = "fb5af7f4f42afbf4bb4880e8f14a8d9d"

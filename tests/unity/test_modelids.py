@@ -3,12 +3,11 @@ the two COLLADA models ROS#'s r2d2 sample references."""
 
 from __future__ import annotations
 
-import os
 import re
-from pathlib import Path
 
 import pytest
 from helpers import require
+from robot_helpers import R2D2
 
 from unityscaffold.unity.meta import read_meta_guid
 from unityscaffold.unity.modelids import (
@@ -17,13 +16,6 @@ from unityscaffold.unity.modelids import (
     model_file_id,
     xxhash64,
 )
-
-VENDOR = Path(
-    os.environ.get(
-        "UNITYSCAFFOLD_VENDOR", Path(__file__).resolve().parents[2].parent / "shared/vendor"
-    )
-)
-STEP1 = VENDOR / "ros-sharp/samples/gazebo-ros2-step1"
 
 
 @pytest.mark.parametrize(
@@ -41,10 +33,10 @@ def test_xxhash64_gives_the_reference_digests(data: bytes, digest: int) -> None:
 
 
 def test_every_reference_of_the_scene_to_a_model_is_a_computed_id() -> None:
-    scene = STEP1 / "Scenes/Completed/gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
-    require(scene.is_file(), f"ROS#'s r2d2 sample ({STEP1})")
+    scene = R2D2 / "Scenes/Completed/gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
+    require(scene.is_file(), f"ROS#'s r2d2 sample ({R2D2})")
     text = scene.read_text(encoding="utf-8")
-    meshes = STEP1 / "Urdf/file_server2/urdf_tutorial/meshes"
+    meshes = R2D2 / "Urdf/file_server2/urdf_tutorial/meshes"
     for model in ("l_finger.dae", "l_finger_tip.dae"):
         guid = read_meta_guid(meshes / f"{model}.meta")
         found = {int(i) for i in re.findall(rf"\{{fileID: (-?\d+), guid: {guid}, type: 3\}}", text)}

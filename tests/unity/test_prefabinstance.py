@@ -8,11 +8,10 @@ empty ``value:`` and the ``.mat`` as ``objectReference``, then the root's ``m_Na
 
 from __future__ import annotations
 
-import os
 import re
-from pathlib import Path
 
 from helpers import require
+from robot_helpers import R2D2
 
 from unityscaffold.unity.modelids import ROOT_PATH, model_file_id
 from unityscaffold.unity.prefabinstance import (
@@ -27,15 +26,7 @@ from unityscaffold.unity.prefabinstance import (
 
 from .conftest import DATA
 
-VENDOR = Path(
-    os.environ.get(
-        "UNITYSCAFFOLD_VENDOR", Path(__file__).resolve().parents[2].parent / "shared/vendor"
-    )
-)
-COMPLETED = (
-    VENDOR / "ros-sharp/samples/gazebo-ros2-step1"
-    "/Scenes/Completed/gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
-)
+COMPLETED = R2D2 / "Scenes/Completed/gazebo_simulation_scene_ROS2_1_Camera_COMPLETED.unity"
 SUITE = DATA / "ros-tcp-connector" / "EmptyVisualizationSuite.prefab"
 CHANGE = re.compile(
     r"    - target: \{fileID: (-?\d+), guid: \w+, type: 3\}\n"
