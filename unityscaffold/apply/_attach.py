@@ -14,10 +14,10 @@ from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._references import paths_in, untyped_value
-from unityscaffold.apply._robot_fields import refuse_owned_fields
 from unityscaffold.apply._target import target_for
 from unityscaffold.apply._typed import check_names
 from unityscaffold.apply._wiring import catalog_values, hand_set_connector, requirements
+from unityscaffold.apply.robots import refuse_owned_fields
 from unityscaffold.errors import SourceLocation
 from unityscaffold.manifest.model import Component
 from unityscaffold.unity import ObjectRef, ScriptRef

@@ -9,7 +9,6 @@ from dataclasses import dataclass, field
 from unityscaffold.apply._code import CodePlan
 from unityscaffold.apply._facts import NewFields, ScriptFacts
 from unityscaffold.apply._resolve import Candidate, ProjectClasses, named_candidates
-from unityscaffold.apply._robot_plan import PlannedRobot
 from unityscaffold.apply._rossharp import PACKAGE, RosSharp
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import Component, Manifest
@@ -31,7 +30,8 @@ class SceneContext:
     rossharp_names: dict[str, str]  # GUID -> class of ROS#'s scripts
     known: ScriptFacts
     follow_renames: bool = False
-    robots: tuple[PlannedRobot, ...] = ()
+    #: The native assets the robots write (materials, meshes) by project path.
+    robot_assets: dict[str, AssetRef] = field(default_factory=dict)
     classes: ProjectClasses = field(init=False)
 
     def __post_init__(self) -> None:
@@ -59,10 +59,6 @@ class SceneContext:
         if any(s.guid == script.guid for s in self.code.scripts):
             return None  # apply writes a generated script's fields itself
         return self.known.of(script.guid)
-
-    def robot_assets(self) -> dict[str, AssetRef]:
-        """The native assets the robots write (materials, meshes) by project path."""
-        return {path: ref for robot in self.robots for path, ref in robot.asset_refs().items()}
 
     def defaults(self, script: ScriptRef) -> NewFields:
         """Every field a new component of ``script`` is written with (see ``ScriptFacts``);

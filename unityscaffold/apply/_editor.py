@@ -14,7 +14,6 @@ from pathlib import Path
 from unityscaffold.apply._facts import NewFields
 from unityscaffold.apply._identity import Moved
 from unityscaffold.apply._lock import LockComponent, LockPrimitive, LockRobot
-from unityscaffold.apply._robot_owned import RobotFields
 from unityscaffold.errors import SourceLocation, UserError, located_at
 from unityscaffold.unity import (
     GameObject,
@@ -25,7 +24,17 @@ from unityscaffold.unity import (
 )
 from unityscaffold.unity.values import FieldValue
 
-__all__ = ["SceneEditor", "ScenePlan"]
+__all__ = ["RobotFields", "SceneEditor", "ScenePlan"]
+
+
+@dataclass(frozen=True, slots=True)
+class RobotFields:
+    """The fields ``robot``'s import enforces on one of its components (class ``label``): what
+    ``apply.robots`` records while placing a robot, for the entries that would fight it."""
+
+    robot: str
+    label: str
+    names: frozenset[str]
 
 
 @dataclass(slots=True)

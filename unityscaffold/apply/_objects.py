@@ -27,8 +27,8 @@ from unityscaffold.apply._primitives import (
     start_component,
 )
 from unityscaffold.apply._references import typed_reference
-from unityscaffold.apply._robots import refuse_reshaped_robot_objects
 from unityscaffold.apply._typed import Resolver, check_names, typed_value
+from unityscaffold.apply.robots import refuse_reshaped_robot_objects
 from unityscaffold.errors import LocatedError, SourceLocation, UserError, located_at
 from unityscaffold.manifest.model import BuiltinComponent, ObjectPath, RectLayout, SceneObject
 from unityscaffold.unity import AssetRef, FieldValue, GameObject, InlineMap, SceneDocument
@@ -209,7 +209,7 @@ def declare_scene_objects(
         return typed_reference(ctx, editor, path, declared, where)
 
     primitives = lock.primitives_in(scene)
-    hooks = Hooks(editor.path, editor.record, resolve, ctx.robot_assets(), scene, primitives)
+    hooks = Hooks(editor.path, editor.record, resolve, ctx.robot_assets, scene, primitives)
     declared = declare_objects(
         editor.doc, objects, ctx.manifest.project_root, editor.plan.edits, hooks
     )

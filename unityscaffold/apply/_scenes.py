@@ -25,10 +25,9 @@ from unityscaffold.apply._lock import LockFile
 from unityscaffold.apply._objects import declare_scene_objects, set_builtin_references
 from unityscaffold.apply._order import order_objects
 from unityscaffold.apply._renames import follow
-from unityscaffold.apply._robot_plan import PlannedRobot
-from unityscaffold.apply._robots import place_robots, remove_kept
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._target import target_for
+from unityscaffold.apply.robots import PlannedRobot, place_robots, remove_kept
 from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
 from unityscaffold.manifest.model import (
     Action,
@@ -48,7 +47,13 @@ from unityscaffold.unity.project import ScriptInfo
 __all__ = ["ScenePlan", "plan_scenes"]
 
 
-def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: LockFile) -> None:
+def _edit_scene(
+    ctx: SceneContext,
+    plan: ScenePlan,
+    doc: SceneDocument,
+    lock: LockFile,
+    robots: tuple[PlannedRobot, ...],
+) -> None:
     m = ctx.manifest
     now = follow(ctx, plan, doc, lock)
     moves = moved_objects(doc, lock.gameobjects_in(plan.relative))
@@ -69,7 +74,7 @@ def _edit_scene(ctx: SceneContext, plan: ScenePlan, doc: SceneDocument, lock: Lo
             ref = scripts[id(c)]
             slot = (editor.path(c.gameobject), ref.guid, ref.file_id)
             editor.keys.setdefault(slot, []).append(c.key)
-    place_robots(ctx, editor, ctx.robots, lock)
+    place_robots(ctx, editor, robots, lock)
     objects = declare_scene_objects(ctx, editor, lock)
     target = target_for(m)
     needs_connector = [
@@ -159,7 +164,8 @@ def plan_scenes(
     names = rossharp.class_names()
     generated = frozenset(s.view.class_name for s in code.scripts)
     known = ScriptFacts(manifest.project_root, rossharp, scripts, names, generated)
-    ctx = SceneContext(manifest, code, rossharp, scripts, names, known, follow_renames, robots)
+    assets = {path: ref for robot in robots for path, ref in robot.asset_refs().items()}
+    ctx = SceneContext(manifest, code, rossharp, scripts, names, known, follow_renames, assets)
     named = _scene_locations(manifest)
     locations = dict(named)
     for scene in [c.scene for c in lock.components] + [r.scene for r in lock.robots]:
@@ -175,7 +181,7 @@ def plan_scenes(
         # after editing only if something was edited: an unchanged file gives the same answer.
         _refuse_problems(doc)
         with located_at(locations[relative]):
-            _edit_scene(ctx, plan, doc, lock)
+            _edit_scene(ctx, plan, doc, lock, robots)
         if doc.revision:
             _refuse_problems(doc)
         plan.after = doc.text()

@@ -27,7 +27,6 @@ from unityscaffold.apply._lock import (
 )
 from unityscaffold.apply._moves import find_moves
 from unityscaffold.apply._prune import Pruning, plan_pruning
-from unityscaffold.apply._robot_plan import PlannedRobot, plan_robots
 from unityscaffold.apply._rosbridge2 import rosbridge2_notes
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._scenes import ScenePlan, plan_scenes
@@ -35,6 +34,7 @@ from unityscaffold.apply._scriptmetas import plan_script_metas
 from unityscaffold.apply._settings import with_ros_define
 from unityscaffold.apply._target import target_for
 from unityscaffold.apply._userfiles import UserFiles, plan_user_files
+from unityscaffold.apply.robots import PlannedRobot, plan_robots
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.fileout import (
     DesiredFile,

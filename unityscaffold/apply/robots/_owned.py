@@ -1,23 +1,14 @@
 """The fields a robot's import enforces on each of its components, by the component's fileID:
-what ``place_robots`` records for ``_robot_fields`` to refuse entries that would fight it."""
+what ``place_robots`` records for ``_fields`` to refuse entries that would fight it."""
 
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
 
+from unityscaffold.apply._editor import RobotFields
 from unityscaffold.unity.owned import OwnedObject
 
-__all__ = ["RobotFields", "owned_fields"]
-
-
-@dataclass(frozen=True, slots=True)
-class RobotFields:
-    """The fields ``robot``'s import enforces on one of its components (class ``label``)."""
-
-    robot: str
-    label: str
-    names: frozenset[str]
+__all__ = ["owned_fields"]
 
 
 def owned_fields(robot: str, objects: Iterable[OwnedObject]) -> dict[int, RobotFields]:

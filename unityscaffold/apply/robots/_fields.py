@@ -13,8 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from unityscaffold.apply._editor import SceneEditor
-from unityscaffold.apply._robot_owned import RobotFields
+from unityscaffold.apply._editor import RobotFields, SceneEditor
 from unityscaffold.errors import LocatedError, UserError
 from unityscaffold.manifest.model import ComponentField, SceneObject
 from unityscaffold.unity import GameObject, ScriptRef

@@ -8,11 +8,11 @@ alone) is kept (``unity.owned``).
 
 A visual's or collision's ``<mesh>`` is an object of role ``Role.MODEL`` (key
 ``link[i]/visual[j]/shape``), which is no GameObject of the scene's own but an instance of a
-model or prefab: ``_Writer._model`` adds its documents (``_robot_models``: the
+model or prefab: ``_Writer._model`` adds its documents (``_models``: the
 ``ModelInstance`` in ``RobotImport.models[key]``, laid out by ``unity.prefabinstance``) and
 lists its root's stripped Transform among its parent's children; ``sync_owned`` writes such
 documents whole and ``remove_owned`` removes them when the URDF drops the mesh. Its asset files
-(``RobotImport.model_assets``) go with the others in ``_robot_plan``.
+(``RobotImport.model_assets``) go with the others in ``_plan``.
 """
 
 from __future__ import annotations
@@ -24,11 +24,11 @@ from dataclasses import dataclass, field
 from unityscaffold.apply._context import SceneContext
 from unityscaffold.apply._editor import SceneEditor
 from unityscaffold.apply._lock import LockFile, LockRobot
-from unityscaffold.apply._robot_adopt import adopt_existing, keep_unity_rounding
-from unityscaffold.apply._robot_fields import refuse_owned_builtin_fields
-from unityscaffold.apply._robot_models import model_documents
-from unityscaffold.apply._robot_owned import owned_fields
-from unityscaffold.apply._robot_plan import PlannedRobot
+from unityscaffold.apply.robots._adopt import adopt_existing, keep_unity_rounding
+from unityscaffold.apply.robots._fields import refuse_owned_builtin_fields
+from unityscaffold.apply.robots._models import model_documents
+from unityscaffold.apply.robots._owned import owned_fields
+from unityscaffold.apply.robots._plan import PlannedRobot
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.manifest.model import SceneObject
 from unityscaffold.unity import AssetRef, InlineMap, ObjectRef, SceneDocument
@@ -53,7 +53,7 @@ from unityscaffold.urdf.objects import (
     Value,
 )
 
-__all__ = ["place_robots"]
+__all__ = ["place_robots", "refuse_reshaped_robot_objects", "remove_kept"]
 
 _MATERIAL_FILE_ID = 2100000
 # the rest of HingeJoint's m_Limits, which the import leaves at a new joint's values
@@ -170,7 +170,7 @@ def _writer(
 ) -> _Writer:
     """The robot's writer, with the fileIDs of a robot imported by hand taken over: those an
     earlier apply took (per the lock, where the scene still has them), or those of one at the
-    robot's path now (``_robot_adopt``, which refuses whatever else is there)."""
+    robot's path now (``_adopt``, which refuses whatever else is there)."""
     doc = editor.doc
     writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
     earlier = lock.robot_adopted(editor.plan.relative, robot.gameobject)
@@ -215,7 +215,7 @@ class _Writer:
     taken: dict[tuple[str, str], int] = field(default_factory=dict)
 
     def take(self, slots: Mapping[tuple[str, str], int]) -> None:
-        """Slots whose fileIDs come from a robot imported by hand (see ``_robot_adopt``)."""
+        """Slots whose fileIDs come from a robot imported by hand (see ``_adopt``)."""
         self.taken.update(slots)
         self.ids.update(slots)
         self.used.update(slots.values())

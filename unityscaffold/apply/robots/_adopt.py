@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import replace
 from typing import NoReturn
 
-from unityscaffold.apply._robot_plan import PlannedRobot
+from unityscaffold.apply.robots._plan import PlannedRobot
 from unityscaffold.errors import LocatedError
 from unityscaffold.unity import InlineMap, SceneDocument
 from unityscaffold.unity.index import GameObject
@@ -32,7 +32,7 @@ from unityscaffold.urdf.objects import ImportedObject, Role
 __all__ = ["Slot", "adopt_existing", "keep_unity_rounding"]
 
 Slot = tuple[str, str]  # (the object's URDF key, its role: "GameObject", "UrdfLink#0", ...)
-#: An object's components, each as (class, role in the writer's slots: ``_robots._roles``).
+#: An object's components, each as (class, role in the writer's slots: ``_place._roles``).
 Roles = Callable[[ImportedObject], list[tuple[str, str]]]
 
 

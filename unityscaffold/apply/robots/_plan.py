@@ -2,7 +2,7 @@
 stage), and the asset files it makes (materials, STL meshes and prefabs, copied models and
 their textures) with their ``.meta`` files.
 
-The scene half (``_robots``) places the same import into the robot's scene.
+The scene half (``_place``) places the same import into the robot's scene.
 """
 
 from __future__ import annotations
