@@ -1,7 +1,8 @@
 """A `robots:` entry naming a `.xacro`: expanded in process by PyPI's `xacro` (the `xacro`
-extra), `$(find)` resolved through the entry's `packages` only, `args` passed on; the robot is
-the one its plain URDF makes, an edit to an included file is never replayed as a no-op, and a
-xacro mistake is a located error that writes nothing."""
+extra), `$(find)` resolved through the entry's `packages` only, `args` passed on, `$(env)` and
+`$(optenv)` answered by the entry's `env` only; the robot is the one its plain URDF makes, an
+edit to an included file or to `env` is never replayed as a no-op, and a xacro mistake is a
+located error that writes nothing."""
 
 from __future__ import annotations
 
@@ -11,7 +12,15 @@ from pathlib import Path
 
 import pytest
 from helpers import require, snapshot
-from robot_helpers import BOT_URDF, HEADER, ROBOTS, apply_manifest, apply_refused, init_project
+from robot_helpers import (
+    BOT_URDF,
+    HEADER,
+    ROBOTS,
+    apply_manifest,
+    apply_refused,
+    apply_writes_nothing,
+    init_project,
+)
 
 from tests.cli.noop_support import records, scaffold
 from unityscaffold.cli import _app
@@ -122,11 +131,13 @@ def test_an_edit_to_an_included_file_is_seen_by_the_next_check(
         ),
         (
             lambda p: p.replace("$(arg name)", "$(env HOME)"),
-            "error: $(env ...) would make the URDF depend on this machine",
+            f"{XACRO}:2:14: error: $(env HOME): variable 'HOME' has no value in this robot's "
+            "`env` (given: none); the machine's environment is never read",
         ),
         (
             lambda p: p.replace("$(arg name)", "$(cwd)"),
-            "error: $(cwd) (the folder apply runs in) would make the URDF depend on this machine",
+            f"{XACRO}:2:14: error: $(cwd) (the folder apply runs in) would make the URDF "
+            "depend on this machine",
         ),
         (
             lambda p: p.replace("</robot>", "</robt>"),
@@ -171,3 +182,73 @@ def test_xacros_warnings_are_notes_naming_the_file_and_never_reach_stderr(
     assert run.code == 0, run.err
     assert run.err == ""
     assert f"note: {parts}: xacro warns: redefining global symbol: pi" in run.out, run.out
+
+
+# Husky's way of making a part optional (husky_description/urdf/husky.urdf.xacro,
+# https://github.com/husky/husky): an argument whose default is $(optenv VAR default)
+OPTIONAL_ARM = (
+    MAIN.replace(
+        '<xacro:arg name="name" default="wrong"/>',
+        '<xacro:arg name="name" default="wrong"/>\n'
+        '  <xacro:arg name="arm_enabled" default="$(optenv BOT_ARM_ENABLED 0)"/>',
+    )
+    .replace('  <link name="arm">', '  <xacro:if value="$(arg arm_enabled)">\n  <link name="arm">')
+    .replace("</joint>\n</robot>", "</joint>\n  </xacro:if>\n</robot>")
+)
+
+
+def scene_links(project: Path) -> list[str]:
+    """The names of the UrdfLink objects' GameObjects, as the scene lists them."""
+    text = (project / "Assets/Scenes/Main.unity").read_text()
+    return [name for name in ("base", "arm") if f"  m_Name: {name}\n" in text]
+
+
+def test_optenv_takes_its_default_and_the_entrys_env_its_value(
+    project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (project / XACRO).write_text(OPTIONAL_ARM)
+    monkeypatch.setenv("BOT_ARM_ENABLED", "1")  # the machine's value, never read
+    assert apply_manifest(project, MANIFEST).code == 0
+    assert scene_links(project) == ["base"]  # $(optenv BOT_ARM_ENABLED 0): no arm
+    apply_writes_nothing(project)
+    assert apply_manifest(project, MANIFEST, "--check").code == 0
+    with_arm = MANIFEST + "    env: {BOT_ARM_ENABLED: '1'}\n"
+    check = apply_manifest(project, with_arm, "--check")
+    assert check.code == 1, check.out + check.err  # the changed env changes the import
+    assert apply_manifest(project, with_arm).code == 0
+    assert scene_links(project) == ["base", "arm"]
+    apply_writes_nothing(project)
+    assert apply_manifest(project, with_arm, "--check").code == 0
+
+
+def test_a_changed_env_value_is_never_replayed_as_a_no_op(
+    project: Path, monkeypatch: pytest.MonkeyPatch, capsysbinary: pytest.CaptureFixture[bytes]
+) -> None:
+    cache = project.parent / "cache"
+    (cache / "unityscaffold").mkdir(parents=True)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
+    monkeypatch.delenv("UNITYSCAFFOLD_NO_CACHE", raising=False)
+    monkeypatch.delenv("UNITYSCAFFOLD_NO_REPLAY", raising=False)
+    monkeypatch.chdir(project)
+    (project / XACRO).write_text(OPTIONAL_ARM)
+    manifest = project / "robot.yaml"
+    manifest.write_text(MANIFEST + "    env: {BOT_ARM_ENABLED: '0'}\n")
+    assert scaffold(capsysbinary, "apply")[0] == 0
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 0
+    assert scaffold(capsysbinary, "apply", "--check")[0] == 0
+    assert records(cache)  # the clean check was recorded
+    manifest.write_text(MANIFEST + "    env: {BOT_ARM_ENABLED: '1'}\n")
+    code, out, _ = scaffold(capsysbinary, "apply", "--check")
+    assert code == 1 and b"robot bot (" in out, out
+
+
+def test_env_without_its_variable_is_an_error_naming_the_env_key(project: Path) -> None:
+    (project / XACRO).write_text(MAIN.replace('<plugin name="p"/>', '<plugin name="$(env P)"/>'))
+    run = apply_refused(project, MANIFEST)
+    # line 7, column 19: the `$(env` of `    <plugin name="$(env P)"/>`
+    assert (
+        f"{XACRO}:7:19: error: $(env P): variable 'P' has no value in this robot's `env` "
+        "(given: none); the machine's environment is never read" in run.err
+    ), run.err
+    assert "hint: give it one in the entry: env: {P: <value>}" in run.err
+    assert apply_manifest(project, MANIFEST + "    env: {P: p}\n").code == 0

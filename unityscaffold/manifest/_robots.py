@@ -10,7 +10,7 @@ from unityscaffold.manifest._entries import Context, locations, read_scene
 from unityscaffold.manifest._objects import read_vector
 from unityscaffold.manifest._paths import folder_path, project_path
 from unityscaffold.manifest._read import Reader
-from unityscaffold.manifest._spec_robots import ROBOT, URDF_SUFFIX
+from unityscaffold.manifest._spec_robots import ENV_NAME, ROBOT, URDF_SUFFIX
 from unityscaffold.manifest._yaml import YEntry, YMap, YNode, YScalar
 from unityscaffold.manifest.robot_entry import RobotEntry
 
@@ -52,7 +52,8 @@ def read_robot(r: Reader, node: YNode, ctx: Context, base: Path) -> RobotEntry |
         gravity=r.boolean(m, "gravity"),
         convex=r.boolean(m, "convex"),
         plugin_newline=_NEWLINES[newline],
-        args=_args(r, m),
+        args=_texts(r, m, "args", "xacro argument name", "{prefix: left_}"),
+        env=_texts(r, m, "env", "environment variable name", "{HUSKY_LMS1XX_ENABLED: '1'}"),
     )
     return item if urdf is not None and scene else None
 
@@ -96,15 +97,24 @@ def _packages(r: Reader, m: YMap, base: Path) -> tuple[tuple[str, Path], ...]:
     return tuple(found)
 
 
-def _args(r: Reader, m: YMap) -> tuple[tuple[str, str], ...]:
-    entry = m.get("args")
+def _texts(r: Reader, m: YMap, key: str, name: str, example: str) -> tuple[tuple[str, str], ...]:
+    """A mapping of names to text (``args``, ``env``); a value that is not text (a number, a
+    boolean, null, a list) is an error at it, since xacro would see its YAML spelling."""
+    entry = m.get(key)
     if entry is None or (isinstance(entry.value, YScalar) and entry.value.value is None):
         return ()
     if not isinstance(entry.value, YMap):
-        r.invalid(entry, "a mapping of xacro argument name to text, such as {prefix: left_}")
+        r.invalid(entry, f"a mapping of {name} to text, such as {example}")
         return ()
     found = []
     for item in entry.value.entries:
+        if key == "env" and not re.match(ENV_NAME, item.key):
+            r.error(
+                item.key_location,
+                f"invalid environment variable name '{item.key}'",
+                expected="a name xacro can write in $(env NAME): no spaces, '(', ')' or '$'",
+            )
+            continue
         value = item.value.value if isinstance(item.value, YScalar) else None
         if not isinstance(value, str):
             r.invalid(item, "text (quote numbers and booleans: '0.5', 'true')")

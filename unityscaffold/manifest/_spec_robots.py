@@ -14,9 +14,11 @@ from unityscaffold.manifest._keys import (
     scene_key,
 )
 
-__all__ = ["ROBOT", "URDF_SUFFIX"]
+__all__ = ["ENV_NAME", "ROBOT", "URDF_SUFFIX"]
 
 URDF_SUFFIX = "[.](urdf|xacro)$"
+# what xacro can name in $(env VAR): it splits a substitution at spaces and ends it at ')'
+ENV_NAME = r"^[^\s()$]+$"
 _FLOAT = {"type": "number", "minimum": -FLOAT32_MAX, "maximum": FLOAT32_MAX}
 _VEC3 = {"type": "array", "items": _FLOAT, "minItems": 3, "maxItems": 3}
 _ASSETS = {
@@ -56,6 +58,18 @@ ROBOT = Section(
             "Arguments of a `.xacro` `urdf`, name to text (`{prefix: left_}`); an argument "
             "left out takes its `<xacro:arg>` default.",
             {"type": ["object", "null"], "additionalProperties": STR},
+        ),
+        Key(
+            "env",
+            "Environment variables of a `.xacro` `urdf`, name to text "
+            "(`{HUSKY_LMS1XX_ENABLED: '1'}`): what its `$(env VAR)` and `$(optenv VAR default)` "
+            "read. The machine's environment is never read: a variable left out takes its "
+            "`$(optenv)` default (empty without one), and `$(env)` of it is an error.",
+            {
+                "type": ["object", "null"],
+                "propertyNames": {"pattern": ENV_NAME},
+                "additionalProperties": {"type": "string"},
+            },
         ),
         Key(
             "assets",

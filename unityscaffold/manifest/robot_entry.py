@@ -17,7 +17,8 @@ class RobotEntry:
     and ``Assets/Urdf/<robot name>``). ``kinematic``, ``gravity`` and ``convex`` are the
     UrdfRobot inspector's switches, None for what the importer sets; ``plugin_newline`` is
     the newline of the plugin texts (``\\r\\n``, as ROS#'s importer writes them on Windows);
-    ``args`` are the xacro arguments of a ``.xacro`` ``urdf``."""
+    ``args`` are the xacro arguments of a ``.xacro`` ``urdf``, and ``env`` the values its
+    ``$(env VAR)`` and ``$(optenv VAR)`` take (the machine's environment is never read)."""
 
     urdf: Path
     scene: str
@@ -32,3 +33,4 @@ class RobotEntry:
     convex: bool | None = None
     plugin_newline: str = "\r\n"
     args: tuple[tuple[str, str], ...] = ()  # xacro arguments, for a .xacro ``urdf``
+    env: tuple[tuple[str, str], ...] = ()  # xacro's environment variables, likewise

@@ -48,11 +48,13 @@ def import_robot(
     project: Path,
     plugin_newline: str = "\r\n",
     xacro_args: Mapping[str, str] | None = None,
+    xacro_env: Mapping[str, str] | None = None,
 ) -> RobotImport:
     """Read ``urdf``, resolve its meshes against ``packages`` (inside ``project``) and build
-    what ROS#'s importer would (a ``.xacro`` expanded with ``xacro_args``): every problem is
-    a located error, and nothing is written."""
-    robot = read_urdf(urdf, packages=packages, xacro_args=xacro_args)
+    what ROS#'s importer would (a ``.xacro`` expanded with ``xacro_args``, its ``$(env)`` and
+    ``$(optenv)`` answered by ``xacro_env``): every problem is a located error, and nothing is
+    written."""
+    robot = read_urdf(urdf, packages=packages, xacro_args=xacro_args, xacro_env=xacro_env)
     refuse_unchecked_joints(robot)
     meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
     files = {f"Materials/{name}": text for name, text in importer_materials(robot).items()}

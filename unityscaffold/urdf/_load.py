@@ -38,13 +38,17 @@ def read_urdf(
     *,
     packages: Mapping[str, Path] | None = None,
     xacro_args: Mapping[str, str] | None = None,
+    xacro_env: Mapping[str, str] | None = None,
 ) -> Robot:
     """The robot in the URDF file at ``path``; a ``.xacro`` file is expanded first, its
-    ``$(find)`` resolved through ``packages`` and its ``$(arg)`` given by ``xacro_args``."""
+    ``$(find)`` resolved through ``packages``, its ``$(arg)`` given by ``xacro_args`` and its
+    ``$(env)`` and ``$(optenv)`` by ``xacro_env``."""
     path = Path(path)
     try:
         if is_xacro(path) and path.is_file():
-            expanded = expand_xacro(path, packages=packages or {}, args=xacro_args or {})
+            expanded = expand_xacro(
+                path, packages=packages or {}, args=xacro_args or {}, env=xacro_env or {}
+            )
             # the expanded URDF has no file of its own: its lines are the xacro output's
             robot = parse_urdf(expanded.urdf, f"{path} (expanded by xacro)")
             return dataclasses.replace(robot, notes=expanded.warnings)

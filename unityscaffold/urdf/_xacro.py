@@ -1,10 +1,13 @@
 """Expanding a ``.xacro`` robot into URDF bytes, in process, with PyPI's optional ``xacro``.
 
 Determinism: ``$(find pkg)`` resolves only through the manifest entry's ``packages`` (never an
-ament index or ROS_PACKAGE_PATH of the machine), and ``$(env)``, ``$(optenv)`` and ``$(cwd)``
-(the folder apply runs in) are refused, so the URDF depends only on files in the repository and
-the entry's ``args``. xacro opens every file it reads with ``open``, which apply's no-op record
-observes like any other read.
+ament index or ROS_PACKAGE_PATH of the machine); ``$(env VAR)`` and ``$(optenv VAR default)``
+read the entry's ``env`` and never the machine's environment (``$(optenv)`` of a variable the
+entry leaves out is its default, or the empty string, as xacro gives it for an unset variable;
+``$(env)`` of one is refused, as xacro refuses it); ``$(cwd)`` (the folder apply runs in) is
+refused. So the URDF depends only on files in the repository and the entry's ``args`` and
+``env``. xacro opens every file it reads with ``open``, which apply's no-op record observes like
+any other read.
 
 xacro prints its warnings to stderr; they are caught and returned with the file xacro was
 reading, for apply to report as notes like its own.
@@ -18,8 +21,9 @@ from __future__ import annotations
 
 import contextlib
 import io
+import re
 import xml.parsers.expat
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, NoReturn
@@ -32,7 +36,13 @@ _INSTALL = "install the extra that reads them: pip install 'unityscaffold[xacro]
 
 
 class _Refused(Exception):
-    """A substitution the project does not allow; its message is the user's error."""
+    """A substitution the project does not allow: its message and hint are the user's error,
+    and ``pattern`` finds the substitution in the file xacro was reading (to give its line)."""
+
+    def __init__(self, message: str, hint: str, pattern: str) -> None:
+        super().__init__(message)
+        self.hint = hint
+        self.pattern = pattern
 
 
 @dataclass(frozen=True, slots=True)
@@ -47,10 +57,17 @@ def is_xacro(path: Path) -> bool:
     return path.suffix == ".xacro"
 
 
-def expand_xacro(path: Path, *, packages: Mapping[str, Path], args: Mapping[str, str]) -> Expanded:
-    """The URDF that ``path`` expands to with ``args``, with xacro's warnings; a xacro error
-    names the file it is in (and the line, for XML errors), and nothing else of the machine is
-    read."""
+def expand_xacro(
+    path: Path,
+    *,
+    packages: Mapping[str, Path],
+    args: Mapping[str, str],
+    env: Mapping[str, str] | None = None,
+) -> Expanded:
+    """The URDF that ``path`` expands to with ``args`` and the variables ``env`` gives
+    ``$(env)`` and ``$(optenv)``, with xacro's warnings; a xacro error names the file it is in
+    (and the line, for XML errors and refused substitutions), and nothing else of the machine
+    is read."""
     try:
         import xacro
         from xacro import substitution_args
@@ -60,7 +77,8 @@ def expand_xacro(path: Path, *, packages: Mapping[str, Path], args: Mapping[str,
         ) from None
     warnings: list[str] = []
     stray = io.StringIO()
-    with _hooked(xacro, substitution_args, packages, warnings), contextlib.redirect_stderr(stray):
+    hooks = _Hooks(packages, env or {})
+    with _hooked(xacro, substitution_args, hooks, warnings), contextlib.redirect_stderr(stray):
         try:
             document = xacro.process_file(str(path), mappings=dict(args), verbosity=0)
         except (Exception, RecursionError) as error:  # xacro raises what it meets
@@ -92,59 +110,79 @@ def _stray_lines(text: str) -> list[str]:
     ]
 
 
-@contextlib.contextmanager
-def _hooked(
-    xacro: Any, substitution_args: Any, packages: Mapping[str, Path], warnings: list[str]
-) -> Iterator[None]:
-    def find(package: str) -> str:
-        folder = packages.get(package)
+@dataclass(frozen=True, slots=True)
+class _Hooks:
+    """What ``$(find)``, ``$(env)`` and ``$(optenv)`` answer: the entry's packages and env."""
+
+    packages: Mapping[str, Path]
+    env: Mapping[str, str]
+
+    def find(self, package: str) -> str:
+        folder = self.packages.get(package)
         if folder is None:
-            listed = ", ".join(sorted(packages)) or "none"
+            listed = ", ".join(sorted(self.packages)) or "none"
             raise _Refused(
                 f"$(find {package}): package '{package}' is not in this robot's `packages` "
-                f"(listed: {listed})"
+                f"(listed: {listed})",
+                hint=f"add {package}: <its folder, relative to the manifest> to `packages`",
+                pattern=rf"\$\(\s*find\s+{re.escape(package)}(?=[\s)])",
             )
         return str(folder)
 
-    def refuse(call: str) -> Callable[..., NoReturn]:
-        def refused(*_: object) -> NoReturn:
-            raise _Refused(f"{call} would make the URDF depend on this machine")
+    def env_value(self, name: str) -> str:
+        # xacro's $(env) is an error for an unset variable; the entry's env is the only one
+        if name not in self.env:
+            given = ", ".join(sorted(self.env)) or "none"
+            raise _Refused(
+                f"$(env {name}): variable '{name}' has no value in this robot's `env` "
+                f"(given: {given}); the machine's environment is never read",
+                hint=f"give it one in the entry: env: {{{name}: <value>}}",
+                pattern=rf"\$\(\s*env\s+{re.escape(name)}(?=[\s)])",
+            )
+        return self.env[name]
 
-        return refused
+    def optenv_value(self, name: str, default: str = "") -> str:
+        # xacro's default for $(optenv VAR) with no default of its own is the empty string
+        return self.env.get(name, default)
 
+
+@contextlib.contextmanager
+def _hooked(
+    xacro: Any, substitution_args: Any, hooks: _Hooks, warnings: list[str]
+) -> Iterator[None]:
     extension = xacro.eval_extension
 
     def eval_extension(text: str) -> object:
         # xacro answers $(cwd) itself, before any substitution hook, with the folder it runs in
         if text.replace(" ", "") == "$(cwd)":
-            refuse("$(cwd) (the folder apply runs in)")()
+            raise _Refused(
+                "$(cwd) (the folder apply runs in) would make the URDF depend on this machine",
+                hint="pass the value in the entry's `args` instead",
+                pattern=r"\$\(\s*cwd\s*\)",
+            )
         return extension(text)
 
     def warning(*parts: object, **_: object) -> None:
         where = (xacro.filestack or [None])[-1] or "xacro"
         warnings.append(f"{where}: xacro warns: {' '.join(str(p) for p in parts)}")
 
-    hooks = {
-        "_eval_find": find,
-        "_eval_env": refuse("$(env ...)"),
-        "_eval_optenv": refuse("$(optenv ...)"),
-    }
+    answers = {"find": hooks.find, "env": hooks.env_value, "optenv": hooks.optenv_value}
     # xacro 2.x offers no public hook for $(find), $(env), $(cwd) or its warnings: these are its
-    # private names, reached on purpose and by name (the xacro tests fail if a release moves
-    # them).
+    # private names (the functions $(...) calls, and the table $(eval) and ${} see), reached on
+    # purpose and by name (the xacro tests fail if a release moves them).
     table = vars(substitution_args)["_eval_dict"]
-    saved = {name: getattr(substitution_args, name) for name in hooks}
-    saved_table = {key: table[key] for key in ("find", "env", "optenv")}
+    saved = {name: getattr(substitution_args, f"_eval_{name}") for name in answers}
+    saved_table = {key: table[key] for key in answers}
     saved_xacro = {"eval_extension": extension, "warning": vars(xacro)["warning"]}
     try:
-        for name, hook in hooks.items():
-            setattr(substitution_args, name, hook)
-        table.update(find=find, env=hooks["_eval_env"], optenv=hooks["_eval_optenv"])
+        for name, answer in answers.items():
+            setattr(substitution_args, f"_eval_{name}", answer)
+        table.update(answers)
         xacro.eval_extension, xacro.warning = eval_extension, warning
         yield
     finally:
         for name, original in saved.items():
-            setattr(substitution_args, name, original)
+            setattr(substitution_args, f"_eval_{name}", original)
         table.update(saved_table)
         for name, original in saved_xacro.items():
             setattr(xacro, name, original)
@@ -157,8 +195,8 @@ def _raise_located(path: Path, stack: list[str | None], error: BaseException) ->
         cause = getattr(cause, "exc", None) or cause.__context__
     where = stack[-1] or str(path)
     if isinstance(cause, _Refused):
-        hint = "list the package under `packages`, or pass the value in `args`"
-        raise LocatedError.at(SourceLocation(where), str(cause), hint=hint) from None
+        location = _found(where, cause.pattern)
+        raise LocatedError.at(location, str(cause), hint=cause.hint) from None
     if isinstance(cause, xml.parsers.expat.ExpatError):
         location = SourceLocation(where, cause.lineno, cause.offset + 1)
         reason = xml.parsers.expat.errors.messages.get(cause.code, "not well-formed")
@@ -176,3 +214,14 @@ def _raise_located(path: Path, stack: list[str | None], error: BaseException) ->
     raise LocatedError.at(
         SourceLocation(where), f"xacro: {message}{where_from}", hint=hint
     ) from None
+
+
+def _found(path: str, pattern: str) -> SourceLocation:
+    """Where ``pattern`` first matches in the file at ``path``; the file alone when it does not
+    (the substitution came from a macro of another file, or from an argument's value)."""
+    try:
+        raw = Path(path).read_bytes()
+    except OSError:
+        return SourceLocation(path)
+    match = re.search(pattern.encode(), raw)
+    return SourceLocation.at_byte(path, raw, match.start()) if match else SourceLocation(path)

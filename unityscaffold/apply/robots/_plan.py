@@ -126,6 +126,7 @@ def _plan(manifest: Manifest, entry: RobotEntry, salt: str) -> PlannedRobot:
             project=manifest.path.parent,
             plugin_newline=entry.plugin_newline,
             xacro_args=dict(entry.args),
+            xacro_env=dict(entry.env),
         )
     _check_default_names(imported, entry)
     name = imported.robot.name
