@@ -86,15 +86,22 @@ def test_a_xacro_robot_makes_the_project_its_plain_urdf_makes(project: Path) -> 
     }
 
 
-def test_an_edit_to_an_included_file_is_seen_by_the_next_check(
-    project: Path, monkeypatch: pytest.MonkeyPatch, capsysbinary: pytest.CaptureFixture[bytes]
-) -> None:
+def recording(project: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The no-op record switched on, in a cache folder of the test's own (returned), with
+    ``project`` as the current folder: as a user's repeated `scaffold apply` runs."""
     cache = project.parent / "cache"
     (cache / "unityscaffold").mkdir(parents=True)
     monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
     monkeypatch.delenv("UNITYSCAFFOLD_NO_CACHE", raising=False)
     monkeypatch.delenv("UNITYSCAFFOLD_NO_REPLAY", raising=False)
     monkeypatch.chdir(project)
+    return cache
+
+
+def test_an_edit_to_an_included_file_is_seen_by_the_next_check(
+    project: Path, monkeypatch: pytest.MonkeyPatch, capsysbinary: pytest.CaptureFixture[bytes]
+) -> None:
+    cache = recording(project, monkeypatch)
     planned: list[list[str]] = []
     real = _app.run_cli
     monkeypatch.setattr(_app, "run_cli", lambda args: planned.append(args) or real(args))
@@ -224,12 +231,7 @@ def test_optenv_takes_its_default_and_the_entrys_env_its_value(
 def test_a_changed_env_value_is_never_replayed_as_a_no_op(
     project: Path, monkeypatch: pytest.MonkeyPatch, capsysbinary: pytest.CaptureFixture[bytes]
 ) -> None:
-    cache = project.parent / "cache"
-    (cache / "unityscaffold").mkdir(parents=True)
-    monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
-    monkeypatch.delenv("UNITYSCAFFOLD_NO_CACHE", raising=False)
-    monkeypatch.delenv("UNITYSCAFFOLD_NO_REPLAY", raising=False)
-    monkeypatch.chdir(project)
+    cache = recording(project, monkeypatch)
     (project / XACRO).write_text(OPTIONAL_ARM)
     manifest = project / "robot.yaml"
     manifest.write_text(MANIFEST + "    env: {BOT_ARM_ENABLED: '0'}\n")

@@ -1,11 +1,11 @@
 """urdf stage: a robot's URDF, read exactly, and turned into what ROS#'s importer would build.
 
 ``import_robot`` is the stage: the URDF read into the frozen model of ``model`` (all problems
-of a file reported at once, each at its line and column), its ``package://`` and
-``$(find pkg)`` meshes found, and the result: the GameObjects with their components and fields
-(``objects``), and the asset files (materials, STL meshes). ``read_urdf`` and
-``resolve_meshes`` are its first steps on their own. The stage is pure: it reads and returns
-values, which ``apply`` is to consume (see ``docs/architecture.md``).
+of a file reported at once, each at its line and column), its meshes found in their packages
+(``package://``, ``$(find pkg)``, ``file://``, paths), and the result: the GameObjects with
+their components and fields (``objects``), and the asset files (materials, STL meshes).
+``read_urdf`` and ``resolve_meshes`` are its first steps on their own. The stage is pure: it
+reads and returns values, which ``apply`` is to consume (see ``docs/architecture.md``).
 
 The names below are imported on first use (``__getattr__``): apply's scene code imports the
 value types of ``objects`` on every run, and a manifest without ``robots:`` should not pay for
