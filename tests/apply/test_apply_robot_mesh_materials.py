@@ -14,7 +14,6 @@ from helpers import binary_stl, text_diff, updating
 from robot_helpers import (
     HEADER,
     apply,
-    apply_refused,
     apply_writes_nothing,
     copy_meshes,
     inertial,
@@ -132,15 +131,19 @@ def test_a_changed_material_changes_the_renderers_and_a_removed_one_leaves_the_m
     assert apply(project, "--check").code == 0
 
 
-def test_a_material_on_a_model_of_several_parts_is_refused_and_nothing_written(
+def test_a_material_on_a_model_of_several_parts_fills_its_renderer_s_first_slot(
     project: Path,
 ) -> None:
+    """``Renderer.sharedMaterial`` is a renderer's first material (Unity's scripting
+    reference): setting it changes slot 0, the finger's second part keeps the model's own."""
     dae = (project / "ros/desc/meshes/l_finger.dae").read_text()
     # the finger drawn in two parts: two submeshes, two material slots on its renderer
     triangles = re.search(r"<triangles .*?</triangles>", dae, re.S)
     assert triangles
     dae = dae.replace(triangles.group(), triangles.group() * 2)
     (project / "ros/desc/meshes/l_finger.dae").write_text(dae)
-    run = apply_refused(project)
-    assert "bot.urdf:5:85: error: a <material> on the visual of model" in run.err, run.err
-    assert run.err.count("is drawn in 2 parts") == 3
+    run = apply(project)
+    assert run.code == 0, run.err
+    text = instances(project)
+    assert "m_Materials.Array.data[0]" in text and "m_Materials.Array.data[1]" not in text
+    apply_writes_nothing(project)

@@ -347,19 +347,19 @@ def dae_robot(tmp_path: Path, dae: str, part: str = "collision", material: str =
 @pytest.mark.parametrize(
     ("dae", "part", "reason"),
     [
-        (collada(NODE.format("n"), up="Z_UP"), "visual", "model 'package://desc/m.dae' is Z_UP"),
-        (collada(NODE.format("a") + NODE.format("b")), "collision", "has several nodes"),
         (
-            collada('<node id="n" name="n"><translate>0 1 0</translate></node>'),
-            "visual",
-            "its one top node 'n' is moved or turned",
+            collada(NODE.format("n").replace("/>", "/><instance_geometry url='#g'/>")),
+            "collision",
+            "its node 'n' (line 7) draws 2 geometries",
         ),
-        (collada(NODE.format("n").replace('id="n"', 'id="n-id"')), "collision", "(id 'n-id')"),
-        (collada('<node id="n" name="n"/>'), "collision", "has 0 geometries"),
-        (collada(""), "visual", "has no nodes"),
+        (
+            collada("<node>" + NODE.format("a") + "</node><node>" + NODE.format("b") + "</node>"),
+            "collision",
+            "a node without name or id leads to its node 'a' (line 7)",
+        ),
     ],
 )
-def test_a_collada_model_not_checked_against_unity_is_refused_at_the_mesh(
+def test_a_collada_model_whose_objects_are_not_checked_is_refused_at_the_mesh(
     tmp_path: Path, dae: str, part: str, reason: str
 ) -> None:
     urdf = dae_robot(tmp_path, dae, part)
@@ -368,55 +368,91 @@ def test_a_collada_model_not_checked_against_unity_is_refused_at_the_mesh(
     assert "\n  hint: " in message
 
 
-def test_a_multi_node_model_is_a_visual_of_the_root_alone(tmp_path: Path) -> None:
-    urdf = dae_robot(tmp_path, collada(NODE.format("a") + NODE.format("b")), "visual")
-    result = import_robot(urdf, packages={}, project=tmp_path)
-    (instance,) = result.models.values()
+@pytest.mark.parametrize(
+    "dae",
+    [
+        collada(NODE.format("n"), up="Z_UP"),
+        collada(NODE.format("a") + NODE.format("b"), up="X_UP"),
+        collada('<node id="n" name="n"><translate>0 1 0</translate></node>'),
+        collada(""),
+    ],
+)
+def test_models_of_any_up_axis_node_count_or_pose_are_visuals(tmp_path: Path, dae: str) -> None:
+    urdf = dae_robot(tmp_path, dae, "visual")
+    (instance,) = import_robot(urdf, packages={}, project=tmp_path).models.values()
     assert [c.value for c in instance.modifications][-1] == "m"
     assert (instance.removed, instance.added) == ((), ())
 
 
-def test_a_material_on_a_collada_visual_goes_on_the_root_s_renderer_in_unity_s_order(
+def test_a_collision_on_a_model_of_several_nodes_replaces_each_node_s_mesh_by_a_collider(
     tmp_path: Path,
 ) -> None:
-    """The root's renderer is between its Transform and its GameObject by fileID, where
-    Unity keeps the change (``tests/unity/test_prefabinstance.py``)."""
-    dae = collada(NODE.format("n"), geometries=GEOMETRY)
-    urdf = dae_robot(
-        tmp_path, dae, "visual", material='<material name=""><color rgba="0 0.5 1 1"/></material>'
+    """ROS#'s ``ConvertMeshToColliders``: per object with a MeshFilter a MeshCollider on its
+    mesh, its renderer and filter removed; the objects by ``urdf.colladamodel``'s paths."""
+    nodes = NODE.format("a") + '<node id="b" name="b">' + NODE.format("c") + "</node>"
+    urdf = dae_robot(tmp_path, collada(nodes, up="Z_UP", geometries=GEOMETRY))
+    (instance,) = import_robot(urdf, packages={}, project=tmp_path).models.values()
+    paths = ["//RootNode/root/a", "//RootNode/root/b/c"]
+    assert instance.removed == tuple(
+        model_file_id(cls, path) for path in paths for cls in ("MeshRenderer", "MeshFilter")
     )
-    result = import_robot(urdf, packages={}, project=tmp_path)
-    (instance,) = result.models.values()
-    paths = [(c.target, c.property_path) for c in instance.modifications]
-    assert paths[9:] == [
-        (ROOT_TRANSFORM, "m_LocalEulerAnglesHint.z"),
-        (ROOT_RENDERER, MATERIAL_CHANGE),
-        (ROOT_GAMEOBJECT, "m_Name"),
+    assert [(a.target, a.mesh.file_id, a.mesh.path) for a in instance.added] == [
+        (model_file_id("GameObject", paths[0]), model_file_id("Mesh", "a"), "desc/m.dae"),
+        (model_file_id("GameObject", paths[1]), model_file_id("Mesh", "c"), "desc/m.dae"),
     ]
-    assert material_changes(instance) == [(ROOT_RENDERER, "Materials/rgba-0-0.5-1-1.mat")]
 
 
-@pytest.mark.parametrize(
-    ("nodes", "geometries", "reason"),
-    [
-        (NODE.format("a") + NODE.format("b"), GEOMETRY, "it has several nodes"),
-        (NODE.format("n"), GEOMETRY.replace("</mesh>", "<triangles/></mesh>"), "in 2 parts"),
-        (NODE.format("n").replace("/>", "/><instance_geometry url='#g'/>"), GEOMETRY, "2 parts"),
-        (NODE.format("n"), "", "drawn in 0 parts"),
-    ],
-)
-def test_a_material_on_a_collada_visual_of_other_renderers_is_refused_at_the_material(
-    tmp_path: Path, nodes: str, geometries: str, reason: str
+def test_a_material_on_a_collada_visual_goes_on_every_node_s_renderer(tmp_path: Path) -> None:
+    """As on the UR3 instances Unity saved (``tests/urdf/test_colladamodel.py``): one change
+    of ``m_Materials.Array.data[0]`` per renderer, by the target's fileID."""
+    dae = collada(NODE.format("node0") + NODE.format("node1"), up="Z_UP", geometries=GEOMETRY)
+    urdf = dae_robot(tmp_path, dae, "visual", material=RED)
+    (instance,) = import_robot(urdf, packages={}, project=tmp_path).models.values()
+    assert material_changes(instance) == [
+        (-7264643304161535556, "Materials/red.mat"),
+        (55291342286754144, "Materials/red.mat"),
+    ]
+
+
+def test_a_material_on_a_model_whose_renderers_are_not_checked_is_refused_at_the_material(
+    tmp_path: Path,
 ) -> None:
-    """Which renderers such a model has, or which slots ``sharedMaterial`` replaces on a
-    renderer of several, no Unity-written file here shows."""
-    urdf = dae_robot(tmp_path, collada(nodes, geometries=geometries), "visual", material=RED)
+    nodes = NODE.format("n").replace("/>", "/><instance_geometry url='#g'/>")
+    urdf = dae_robot(tmp_path, collada(nodes, geometries=GEOMETRY), "visual", material=RED)
     message = refusal(urdf, tmp_path)
     assert message.startswith(
-        f"{urdf}:2:54: error: a <material> on the visual of model 'package://desc/m.dae' is "
-        "not supported: "
+        f"{urdf}:2:54: error: model 'package://desc/m.dae' cannot take a <material> as ROS# "
+        "makes it: its node 'n' (line 7) draws 2 geometries"
     ), message
-    assert reason in message and "hint: remove the <material>" in message
+    assert "hint: export the model with one geometry per node" in message
+
+
+def test_a_moved_model_root_under_a_turned_link_is_placed_in_the_link_s_axes(
+    tmp_path: Path,
+) -> None:
+    """ROS# parents the instance keeping its world position (``SetParentAndAlign``) while
+    the link's parent ``b`` is already turned by its joint (yaw 90° → Unity ``Euler(0, -90,
+    0)``) and the link ``c`` itself not yet (its own yaw is left out): the root's Y_UP position
+    (-1, 0, 0) (node at x = 1, mirrored) turned back by +90° about y is (0, 0, 1)."""
+    (tmp_path / "desc").mkdir()
+    dae = collada(
+        '<node id="n" name="n"><translate>1 0 0</translate><instance_geometry url="#g"/></node>',
+        geometries=GEOMETRY,
+    )
+    (tmp_path / "desc" / "m.dae").write_text(dae, encoding="utf-8")
+    urdf = tmp_path / "r.urdf"
+    urdf.write_text(
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"><visual><geometry>'
+        '<mesh filename="package://desc/m.dae"/></geometry></visual></link>'
+        '<joint name="j" type="fixed"><parent link="a"/><child link="b"/>'
+        '<origin rpy="0 0 1.5707963267948966"/></joint>'
+        '<joint name="k" type="fixed"><parent link="b"/><child link="c"/>'
+        '<origin rpy="0 0 0.5"/></joint></robot>',
+        encoding="utf-8",
+    )
+    (instance,) = import_robot(urdf, packages={}, project=tmp_path).models.values()
+    position = [float(c.value) for c in instance.modifications[:3]]
+    assert position == pytest.approx([0.0, 0.0, 1.0], abs=1e-6)
 
 
 def test_a_textured_material_on_a_mesh_visual_stays_refused(tmp_path: Path) -> None:

@@ -1,58 +1,92 @@
 """What a COLLADA (``.dae``) file tells about the model Unity makes of it.
 
 A scene refers to a model's objects by fileIDs Unity derives from the model's node tree
-(``unity.modelids``), and ROS#'s ``ColladaAssetPostProcessor`` turns the model's root by the
-file's ``<up_axis>``. So a few facts of the file decide what a scene holding the model reads:
-its up axis and unit, its top nodes (a file with one top node is folded into the model's root)
-with their transforms, the geometries each instantiates and the parts those are drawn in (each
-part a submesh, with a material slot of its own on the renderer), and the texture files its
-images name (copied beside it, as ROS#'s transfer does). Nothing else of the file is read.
+(``unity.modelids``), and ROS#'s ``ColladaAssetPostProcessor`` turns and moves the model's
+root by the file's ``<up_axis>``. So a few facts of the file decide what a scene holding the
+model reads: its up axis and unit, the tree of nodes of its visual scene (``<instance_node>``
+resolved from ``<library_nodes>``), each node's own transform, the geometries it instantiates
+and the parts those are drawn in (each part a submesh, with a material slot of its own on the
+renderer), and the texture files its images name (copied beside it, as ROS#'s transfer does).
+Nothing else of the file is read.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import LocatedError, SourceLocation, UserError
 from unityscaffold.urdf._xml import Element, Text, XmlSource, parse_xml
 
-__all__ = ["ColladaFacts", "ColladaNode", "read_collada"]
+__all__ = ["IDENTITY_MATRIX", "ColladaFacts", "ColladaNode", "Matrix", "read_collada"]
 
+#: A node's transform: a 4×4 matrix, row by row, acting on column vectors (COLLADA's own form).
+Matrix = tuple[float, ...]
+IDENTITY_MATRIX: Matrix = (1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0)
+
+_NAMESPACE = "http://www.collada.org/2005/11/COLLADASchema"
 _TRANSFORMS = ("translate", "rotate", "scale", "matrix", "lookat", "skew")
 # the elements of a <mesh> that each draw a part of it (COLLADA 1.4's primitives)
 _PRIMITIVES = frozenset(
     ("lines", "linestrips", "polygons", "polylist", "triangles", "trifans", "tristrips")
 )
+# <instance_node> may name a node that instantiates itself; Unity's importer would not end
+# either, so the tree is cut at a depth no real model reaches
+_MAX_DEPTH = 64
 
 
 @dataclass(frozen=True, slots=True)
 class ColladaNode:
-    """A ``<node>`` of the visual scene: its ``name`` and ``id``, how many geometries it
-    instantiates, whether it has child nodes (or instantiates other nodes), and whether its
-    transform moves or turns it (a scale alone does not); ``parts``: how many primitives
-    (``<triangles>``, ``<polylist>``, …) the geometries it instantiates have in all."""
+    """A ``<node>`` of the visual scene: its ``name`` and ``id`` (empty when absent), how many
+    geometries it instantiates, ``parts``: how many primitives (``<triangles>``, ``<polylist>``,
+    …) those geometries have in all, its child nodes (its own, then those it instantiates, in
+    document order), and ``matrix``: its own transform, every ``<translate>``, ``<rotate>``,
+    ``<scale>``, ``<matrix>`` and ``<lookat>`` composed in order (``skew`` is kept apart:
+    ``skewed``)."""
 
     name: str
     id: str
     geometries: int
-    has_children: bool
-    moved: bool
-    location: SourceLocation
     parts: int
+    children: tuple[ColladaNode, ...]
+    matrix: Matrix
+    location: SourceLocation
+    skewed: bool = False
+
+    @property
+    def has_children(self) -> bool:
+        return bool(self.children)
+
+    @property
+    def moved(self) -> bool:
+        """Whether the node's own transform translates or turns it (a scale alone does not)."""
+        m = self.matrix
+        if any(math.isnan(v) for v in m) or self.skewed:
+            return True
+        if m[3] or m[7] or m[11]:
+            return True
+        return any(m[4 * r + c] for r in range(3) for c in range(3) if r != c)
+
+    def walk(self) -> tuple[ColladaNode, ...]:
+        """This node and every node below it, depth first, in document order."""
+        return (self, *(n for child in self.children for n in child.walk()))
 
 
 @dataclass(frozen=True, slots=True)
 class ColladaFacts:
-    """``up_axis`` as written (``Y_UP`` when absent, COLLADA's default), ``meter`` (the
-    ``<unit meter>``, which ROS# makes the importer's global scale; 1 when absent or not a
-    number, as ROS# reads it), the visual scene's top nodes and the image files named
-    (relative to the file's folder, in document order, each once)."""
+    """``up_axis`` as Unity's importer reads it (``Y_UP`` when absent, COLLADA's default),
+    ``ros_up_axis`` as ROS#'s post-processor reads it (the element's exact text; ``undefined``
+    when absent or outside COLLADA 1.4's namespace), ``meter`` (the ``<unit meter>``, which
+    ROS# makes the importer's global scale; 1 where ROS# reads none or no number), the visual
+    scene's top nodes and the image files named (relative to the file's folder, in document
+    order, each once)."""
 
     up_axis: str
     meter: float
     nodes: tuple[ColladaNode, ...]
     images: tuple[PurePosixPath, ...]
+    ros_up_axis: str = "undefined"
 
 
 def read_collada(path: Path) -> ColladaFacts:
@@ -73,20 +107,24 @@ def read_collada(path: Path) -> ColladaFacts:
             first.location, first.message, hint="export the model again as COLLADA 1.4"
         ) from None
     asset = root.first("asset")
-    up_axis = _text(asset.first("up_axis")) if asset is not None else ""
-    parts = _parts(root)
+    axis = asset.first("up_axis") if asset is not None else None
+    reader = _Reader(source, _parts(root), _library_nodes(root))
+    # ROS# looks the two elements up in COLLADA 1.4's namespace, and takes a file in any other
+    # (1.5's, or none) as one without them
+    ros_reads = root.tag == "COLLADA" and root.get("xmlns") == _NAMESPACE
     return ColladaFacts(
-        up_axis or "Y_UP",
-        _meter(asset),
-        tuple(_node(node, source, parts) for node in _top_nodes(root)),
+        _text(axis).strip() or "Y_UP",
+        _meter(asset) if ros_reads else 1.0,
+        tuple(reader.node(node, 0) for node in _top_nodes(root)),
         _images(root),
+        _text(axis) if axis is not None and ros_reads else "undefined",
     )
 
 
 def _text(element: Element | None) -> str:
     if element is None:
         return ""
-    return "".join(c.text for c in element.children if isinstance(c, Text)).strip()
+    return "".join(c.text for c in element.children if isinstance(c, Text))
 
 
 def _meter(asset: Element | None) -> float:
@@ -123,55 +161,134 @@ def _parts(root: Element) -> dict[str, int]:
     return found
 
 
-def _node(node: Element, source: XmlSource, parts: dict[str, int]) -> ColladaNode:
-    geometries = node.elements("instance_geometry")
-    return ColladaNode(
-        name=node.get("name") or "",
-        id=node.get("id") or "",
-        geometries=len(geometries),
-        has_children=bool(node.elements("node") or node.elements("instance_node")),
-        moved=_moved(node),
-        location=source.at(node.offset),
-        parts=sum(parts.get((g.get("url") or "").removeprefix("#"), 0) for g in geometries),
-    )
+def _library_nodes(root: Element) -> dict[str, Element]:
+    """Every node with an id, anywhere in the file, for ``<instance_node url>`` (the first of
+    an id wins)."""
+    found: dict[str, Element] = {}
+    stack = [root]
+    while stack:
+        element = stack.pop()
+        if element.tag == "node" and element.get("id"):
+            found.setdefault(element.get("id") or "", element)
+        stack.extend(reversed(element.elements()))
+    return found
 
 
-def _moved(node: Element) -> bool:
-    """Whether the node's own transform translates or rotates it."""
+@dataclass(frozen=True, slots=True)
+class _Reader:
+    source: XmlSource
+    parts: dict[str, int]
+    library: dict[str, Element]
+
+    def node(self, node: Element, depth: int) -> ColladaNode:
+        geometries = node.elements("instance_geometry")
+        children: list[ColladaNode] = []
+        if depth < _MAX_DEPTH:
+            children += [self.node(child, depth + 1) for child in node.elements("node")]
+            for instance in node.elements("instance_node"):
+                target = self.library.get((instance.get("url") or "").removeprefix("#"))
+                if target is not None:
+                    children.append(self.node(target, depth + 1))
+        matrix, skewed = _matrix(node)
+        return ColladaNode(
+            name=node.get("name") or "",
+            id=node.get("id") or "",
+            geometries=len(geometries),
+            parts=sum(
+                self.parts.get((g.get("url") or "").removeprefix("#"), 0) for g in geometries
+            ),
+            children=tuple(children),
+            matrix=matrix,
+            location=self.source.at(node.offset),
+            skewed=skewed,
+        )
+
+
+def _matrix(node: Element) -> tuple[Matrix, bool]:
+    """The node's transforms composed in document order (each one applied inside the ones
+    before it, as COLLADA defines), and whether one was a ``<skew>``."""
+    result, skewed = IDENTITY_MATRIX, False
     for element in node.children:
         if not isinstance(element, Element) or element.tag not in _TRANSFORMS:
             continue
         numbers = _numbers(_text(element))
-        if element.tag == "translate" and any(numbers):
-            return True
-        if element.tag == "rotate" and (len(numbers) != 4 or numbers[3] != 0):
-            return True
-        if element.tag == "matrix" and not _pure_scale(numbers):
-            return True
-        if element.tag in ("lookat", "skew"):
-            return True
-    return False
+        if element.tag == "skew":
+            skewed = True
+            continue
+        result = _multiply(result, _element_matrix(element.tag, numbers))
+    return result, skewed
 
 
-def _pure_scale(numbers: list[float]) -> bool:
-    """A row-major 4×4 matrix that only scales (or is not one at all: then it moves)."""
-    if len(numbers) != 16:
-        return False
-    return all(numbers[i] == 0 for i in range(16) if i not in (0, 5, 10, 15)) and numbers[15] == 1
+def _element_matrix(tag: str, n: list[float]) -> Matrix:
+    nan = (math.nan,) * 16
+    if tag == "matrix":
+        return tuple(n) if len(n) == 16 else nan
+    if tag == "translate" and len(n) == 3:
+        return (1, 0, 0, n[0], 0, 1, 0, n[1], 0, 0, 1, n[2], 0, 0, 0, 1)
+    if tag == "scale" and len(n) == 3:
+        return (n[0], 0, 0, 0, 0, n[1], 0, 0, 0, 0, n[2], 0, 0, 0, 0, 1)
+    if tag == "rotate" and len(n) == 4:
+        return _rotation(n[0], n[1], n[2], math.radians(n[3]))
+    if tag == "lookat" and len(n) == 9:
+        return _look_at(n)
+    return nan
+
+
+def _rotation(x: float, y: float, z: float, angle: float) -> Matrix:
+    length = math.sqrt(x * x + y * y + z * z)
+    if length == 0:
+        return IDENTITY_MATRIX
+    x, y, z = x / length, y / length, z / length
+    c, s, t = math.cos(angle), math.sin(angle), 1 - math.cos(angle)
+    return (
+        *(t * x * x + c, t * x * y - s * z, t * x * z + s * y, 0.0),
+        *(t * x * y + s * z, t * y * y + c, t * y * z - s * x, 0.0),
+        *(t * x * z - s * y, t * y * z + s * x, t * z * z + c, 0.0),
+        *(0.0, 0.0, 0.0, 1.0),
+    )
+
+
+def _look_at(n: list[float]) -> Matrix:
+    """COLLADA's ``<lookat>``: an eye at ``n[0:3]`` looking at ``n[3:6]``, up ``n[6:9]``."""
+    eye, target, up = n[0:3], n[3:6], n[6:9]
+    back = _normal([eye[i] - target[i] for i in range(3)])
+    side = _normal(_cross(up, back))
+    above = _cross(back, side)
+    return (
+        *(side[0], above[0], back[0], eye[0]),
+        *(side[1], above[1], back[1], eye[1]),
+        *(side[2], above[2], back[2], eye[2]),
+        *(0.0, 0.0, 0.0, 1.0),
+    )
+
+
+def _cross(a: list[float], b: list[float]) -> list[float]:
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def _normal(v: list[float]) -> list[float]:
+    length = math.sqrt(sum(c * c for c in v))
+    return [c / length for c in v] if length else [math.nan] * 3
+
+
+def _multiply(a: Matrix, b: Matrix) -> Matrix:
+    return tuple(
+        sum(a[4 * r + k] * b[4 * k + c] for k in range(4)) for r in range(4) for c in range(4)
+    )
 
 
 def _numbers(text: str) -> list[float]:
     try:
         return [float(word) for word in text.split()]
     except ValueError:
-        return [float("nan")]
+        return [math.nan]
 
 
 def _images(root: Element) -> tuple[PurePosixPath, ...]:
     library = root.first("library_images")
     found: dict[PurePosixPath, None] = {}
     for image in library.elements("image") if library is not None else []:
-        named = _text(image.first("init_from"))
+        named = _text(image.first("init_from")).strip()
         if named:
             found.setdefault(PurePosixPath(named.replace("\\", "/")), None)
     return tuple(found)

@@ -18,24 +18,25 @@ of each renderer's first material slot to the robot's ``Materials/<name>.mat``
 (``unity.prefabinstance.material_modifications``), kept among the instance's other changes in
 Unity's order. Without one the model keeps its own materials.
 
-Only what Unity-written files show is made; the rest is a located error saying why:
-other formats (``.obj``, ``.fbx``: Unity's own import, no saved scene to check), models not
-``Y_UP`` (ROS# turns their root otherwise), a single top node that is moved (folded into the
-root), collisions with a model of several nodes or geometries (the colliders' targets are not
-checked), other texture formats, and a ``<material>`` on a COLLADA visual unless the model is one
-node drawn in one part (the renderers of other nodes are not checked, nor which slots of a
-renderer with several ``sharedMaterial`` replaces). A textured ``<material>`` is refused for
-every visual (``urdf.materials``).
+A COLLADA model's root is posed as Unity imports it and ROS#'s post-processor turns it, and
+its inner objects have the fileIDs of the model's node tree (``urdf.colladamodel``, which says
+what rests on Unity-written files and what is inferred). A collision on a model adds a
+MeshCollider to each node that draws, and a ``<material>`` goes on each node's renderer.
+
+The rest is a located error saying why: other formats (``.obj``, ``.fbx``: Unity's own import,
+no saved scene to check), a collision or ``<material>`` on a model with a node of several
+geometries or a drawn node below one without name or id (which objects Unity makes of them is
+not checked), other texture formats. A textured ``<material>`` is refused for every visual
+(``urdf.materials``).
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
-from unityscaffold.errors import DiagnosticSink
+from unityscaffold.errors import DiagnosticSink, SourceLocation
 from unityscaffold.unity.importers import model_meta, texture_meta
 from unityscaffold.unity.material import MATERIAL_FILE_ID
 from unityscaffold.unity.mesh import MESH_FILE_ID
@@ -51,18 +52,14 @@ from unityscaffold.unity.stlprefab import StlPrefab, prefab_meta, stl_prefab, st
 from unityscaffold.urdf import transforms as t
 from unityscaffold.urdf._components import MaterialRef, material_name
 from unityscaffold.urdf._packages import ResolvedMesh
-from unityscaffold.urdf.collada import ColladaFacts, read_collada
-from unityscaffold.urdf.model import Material, Mesh, Robot, Visual
+from unityscaffold.urdf.collada import ColladaFacts, ColladaNode, read_collada
+from unityscaffold.urdf.colladamodel import DrawnNode, drawn_nodes, imported_root_pose, rotate, turn
+from unityscaffold.urdf.model import Material, Mesh, Robot, Vector3, Visual
 
-__all__ = ["COLLADA_Y_UP_ROTATION", "ModelAsset", "ModelPlan", "model_plan"]
+__all__ = ["ModelAsset", "ModelPlan", "model_plan"]
 
-#: The model root's turn ROS#'s post-processor gives a Y_UP COLLADA file: Euler(-90, 90, 0).
-COLLADA_Y_UP_ROTATION: t.Quaternion = (-0.5, 0.5, 0.5, 0.5)
 _ROOT_GAMEOBJECT = model_file_id("GameObject", ROOT_PATH)
 _ROOT_TRANSFORM = model_file_id("Transform", ROOT_PATH)
-_ROOT_FILTER = model_file_id("MeshFilter", ROOT_PATH)
-_ROOT_RENDERER = model_file_id("MeshRenderer", ROOT_PATH)
-_PLAIN_NAME = re.compile(r"[A-Za-z0-9_]+")
 _TYPE_MODEL, _TYPE_NATIVE = 3, 2
 
 GuidOf = Callable[[str], str]
@@ -115,10 +112,11 @@ def model_plan(
     geometry that cannot be made as checked is one located error."""
     sink = DiagnosticSink()
     builder = _Builder(sink, stl_meshes)
+    turns = _creation_turns(robot)
     instances: dict[str, ModelInstance] = {}
-    for key, mesh, visual in _mesh_parts(robot):
+    for key, link, mesh, visual in _mesh_parts(robot):
         resolved = meshes[mesh.filename]
-        instance = builder.instance(mesh, resolved, collision=visual is None)
+        instance = builder.instance(mesh, resolved, turns[link], collision=visual is None)
         if instance is not None and visual is not None and visual.material is not None:
             instance = builder.painted(instance, mesh, resolved, visual.material)
         if instance is not None:
@@ -127,15 +125,36 @@ def model_plan(
     return ModelPlan(instances, tuple(sorted(builder.assets.values(), key=lambda a: a.path)))
 
 
-def _mesh_parts(robot: Robot) -> Iterator[tuple[str, Mesh, Visual | None]]:
-    """``(key, mesh, visual or None for a collision)`` of every mesh geometry."""
+def _mesh_parts(robot: Robot) -> Iterator[tuple[str, str, Mesh, Visual | None]]:
+    """``(key, link name, mesh, visual or None for a collision)`` of every mesh geometry."""
     for i, link in enumerate(robot.links):
         for j, visual in enumerate(link.visuals):
             if isinstance(visual.geometry, Mesh):
-                yield f"link[{i}]/visual[{j}]/shape", visual.geometry, visual
+                yield f"link[{i}]/visual[{j}]/shape", link.name, visual.geometry, visual
         for j, collision in enumerate(link.collisions):
             if isinstance(collision.geometry, Mesh):
-                yield f"link[{i}]/collision[{j}]/shape", collision.geometry, None
+                yield f"link[{i}]/collision[{j}]/shape", link.name, collision.geometry, None
+
+
+def _creation_turns(robot: Robot) -> dict[str, t.Quaternion]:
+    """How each link's geometries' parents are turned in the world when ROS# makes them: as
+    the link's parent link is, since ROS# poses a link (its joint's origin) only after making
+    its visuals and collisions, and its children after that (``UrdfLinkExtensions.Create``),
+    with the robot's root at the origin unturned."""
+    turns: dict[str, t.Quaternion] = {}
+    # (a link, how its parent is turned in the world, its own turn in its parent)
+    stack: list[tuple[str, t.Quaternion, t.Quaternion]] = [
+        (robot.root.name, t.IDENTITY, t.IDENTITY)
+    ]
+    while stack:
+        name, above, own = stack.pop()
+        if name in turns:
+            continue
+        turns[name] = above
+        posed = turn(above, own)
+        for joint in robot.child_joints(name):
+            stack.append((joint.child, posed, t.origin_rotation(joint.origin)))
+    return {link.name: turns.get(link.name, t.IDENTITY) for link in robot.links}
 
 
 class _Builder:
@@ -146,19 +165,25 @@ class _Builder:
         self.stl_meshes = stl_meshes
         self.assets: dict[str, ModelAsset] = {}
         self.collada: dict[Path, ColladaFacts] = {}
-        self.made: dict[tuple[ResolvedMesh, bool], ModelInstance | None] = {}
+        self.made: dict[tuple[ResolvedMesh, bool, t.Quaternion], ModelInstance | None] = {}
         # each asset path in lower case, with the mesh that first wrote there
         self.claimed: dict[str, tuple[ResolvedMesh, Mesh]] = {}
+        # (mesh file, use) whose model was refused already: one error per model and use
+        self.reported: set[tuple[str, str]] = set()
 
     def instance(
-        self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool
+        self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, *, collision: bool
     ) -> ModelInstance | None:
-        """The instance for ``mesh``; one per file and kind (links share meshes)."""
-        if (resolved, collision) not in self.made:
-            self.made[resolved, collision] = self._made(mesh, resolved, collision=collision)
-        return self.made[resolved, collision]
+        """The instance for ``mesh``, whose parent is turned by ``turned`` as ROS# makes it;
+        one per file, kind and turn (links share meshes)."""
+        key = (resolved, collision, turned)
+        if key not in self.made:
+            self.made[key] = self._made(mesh, resolved, turned, collision=collision)
+        return self.made[key]
 
-    def _made(self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance | None:
+    def _made(
+        self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, *, collision: bool
+    ) -> ModelInstance | None:
         suffix = resolved.relative.suffix.lower()
         if suffix == ".stl":
             stem = PurePosixPath(resolved.package) / resolved.relative.with_suffix("")
@@ -171,7 +196,7 @@ class _Builder:
             path = PurePosixPath(resolved.package) / resolved.relative
             if not self._claim(str(path), resolved, mesh):
                 return None
-            return self._collada(mesh, resolved, collision=collision)
+            return self._collada(mesh, resolved, turned, collision=collision)
         self.sink.error(
             mesh.location,
             f"mesh {mesh.filename!r}: {suffix or 'a file without extension'} models are not "
@@ -202,40 +227,19 @@ class _Builder:
         self, instance: ModelInstance, mesh: Mesh, resolved: ResolvedMesh, material: Material
     ) -> ModelInstance | None:
         """A visual's instance with its URDF material on every renderer of the model, as
-        ROS#'s ``UrdfMaterial.SetMaterial`` sets ``sharedMaterial`` on each."""
+        ROS#'s ``UrdfMaterial.SetMaterial`` sets ``sharedMaterial`` on each: a renderer's
+        first slot (``Renderer.sharedMaterial`` is its first material)."""
         prefab = self.assets[instance.source].prefab  # an STL's, made with its instance
         if prefab is not None:
             renderers = tuple(part.renderer for part in prefab.parts)
-        elif self._one_slot(mesh, self._facts(resolved.path), material):
-            renderers = (_ROOT_RENDERER,)
         else:
-            return None
+            facts = self._facts(resolved.path)
+            drawn = self._drawn(mesh, facts, material.location, "<material>")
+            if drawn is None:
+                return None
+            renderers = tuple(node.renderer for node in drawn)
         mat = AssetObject(MaterialRef(material_name(material)).path, MATERIAL_FILE_ID, _TYPE_NATIVE)
         return instance.with_changes(material_modifications(renderers, mat))
-
-    def _one_slot(self, mesh: Mesh, facts: ColladaFacts, material: Material) -> bool:
-        """Whether the model's one renderer is its root's, with one material slot: the
-        renderers of a model of several nodes, and what ``sharedMaterial`` does to a renderer
-        of several slots, are not checked against Unity."""
-        (node, *others) = facts.nodes  # one at least: _checked refused a model of none
-        if others or node.has_children:
-            why = "it has several nodes, whose renderers are not checked against Unity"
-        elif node.geometries != 1 or node.parts != 1:
-            why = (
-                f"its node {node.name!r} is drawn in {node.parts} parts, each with a "
-                "material slot of its own, and which slots ROS#'s material replaces is not "
-                "checked against Unity"
-            )
-        else:
-            return True
-        self.sink.error(
-            material.location,
-            f"a <material> on the visual of model {mesh.filename!r} is not supported: {why} "
-            "(only a model of one node drawn in one part is)",
-            hint="remove the <material> (the model keeps its own), or export the model as "
-            "one node with one geometry of one material",
-        )
-        return False
 
     def _stl(self, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance:
         folder = PurePosixPath(resolved.package) / resolved.relative.parent
@@ -258,61 +262,57 @@ class _Builder:
         return ModelInstance(path, _TYPE_MODEL, prefab.transform, changes, removed, added)
 
     def _collada(
-        self, mesh: Mesh, resolved: ResolvedMesh, *, collision: bool
+        self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, *, collision: bool
     ) -> ModelInstance | None:
         facts = self._facts(resolved.path)
-        if not self._checked(mesh, facts, collision=collision):
-            return None
         path = str(PurePosixPath(resolved.package) / resolved.relative)
         self.assets.setdefault(path, ModelAsset(path, resolved.path, global_scale=facts.meter))
         self._textures(mesh, resolved, facts)
+        position, rotation = imported_root_pose(facts)
         changes = root_modifications(
             _ROOT_TRANSFORM,
             _ROOT_GAMEOBJECT,
             resolved.relative.stem,
-            (0.0, 0.0, 0.0),
-            COLLADA_Y_UP_ROTATION,
+            _local_position(position, turned),
+            _saved_rotation(rotation),
         )
         if not collision:
             return ModelInstance(path, _TYPE_MODEL, _ROOT_TRANSFORM, changes)
-        # one node, folded into the root: its mesh is named after the node
-        mesh_id = model_file_id("Mesh", facts.nodes[0].name)
-        collider = AddedMeshCollider(_ROOT_GAMEOBJECT, AssetObject(path, mesh_id, _TYPE_MODEL))
-        removed = (_ROOT_RENDERER, _ROOT_FILTER)
-        return ModelInstance(path, _TYPE_MODEL, _ROOT_TRANSFORM, changes, removed, (collider,))
+        drawn = self._drawn(mesh, facts, mesh.location, "collision")
+        if drawn is None:
+            return None
+        # ROS#'s ConvertMeshToColliders: on every object with a MeshFilter a MeshCollider on
+        # its mesh, then the renderer and the filter destroyed, object by object
+        removed = tuple(i for node in drawn for i in (node.renderer, node.filter))
+        added = tuple(
+            AddedMeshCollider(node.gameobject, AssetObject(path, node.mesh, _TYPE_MODEL))
+            for node in drawn
+        )
+        return ModelInstance(path, _TYPE_MODEL, _ROOT_TRANSFORM, changes, removed, added)
 
     def _facts(self, path: Path) -> ColladaFacts:
         if path not in self.collada:
             self.collada[path] = read_collada(path)
         return self.collada[path]
 
-    def _checked(self, mesh: Mesh, facts: ColladaFacts, *, collision: bool) -> bool:
-        """Whether the model is one whose instance Unity-written files show; else say why."""
-        name = repr(mesh.filename)
-        reason, hint = None, None
-        if facts.up_axis != "Y_UP":
-            reason = (
-                f"model {name} is {facts.up_axis}: ROS# turns such a model's root by its own "
-                "rule, and no Unity-written scene here shows the rotation saved for it "
-                "(only Y_UP is checked)"
+    def _drawn(
+        self, mesh: Mesh, facts: ColladaFacts, where: SourceLocation, use: str
+    ) -> tuple[DrawnNode, ...] | None:
+        """The model's drawn nodes, when each one's objects follow from a checked rule; else
+        None after saying why (once per model and use)."""
+        drawn = drawn_nodes(facts)
+        problem = _unchecked(drawn)
+        if problem is None:
+            return drawn
+        key = (mesh.filename, use)
+        if key not in self.reported:
+            self.reported.add(key)
+            self.sink.error(
+                where,
+                f"model {mesh.filename!r} cannot take a {use} as ROS# makes it: {problem}",
+                hint="export the model with one geometry per node, each node named",
             )
-            hint = "export the model with Y up, or convert it to STL"
-        elif not facts.nodes:
-            reason = f"model {name} has no nodes in its visual scene: there is nothing to show"
-            hint = "export the model again with its geometry"
-        elif len(facts.nodes) == 1 and facts.nodes[0].moved:
-            reason = (
-                f"model {name}: its one top node {facts.nodes[0].name!r} is moved or turned, "
-                "which Unity folds into the model's root (not checked against a saved scene)"
-            )
-            hint = "apply the node's transform to its geometry (freeze transforms) and export"
-        elif collision:
-            reason = _collision_problem(name, facts)
-            hint = "give the collision an STL mesh, or a model of one node with one geometry"
-        if reason is None:
-            return True
-        self.sink.error(mesh.location, reason, hint=hint)
-        return False
+        return None
 
     def _textures(self, mesh: Mesh, resolved: ResolvedMesh, facts: ColladaFacts) -> None:
         """Copy the images the model names that exist beside it (Unity imports the model
@@ -342,25 +342,46 @@ class _Builder:
             self.assets.setdefault(path, ModelAsset(path, source))
 
 
-def _collision_problem(name: str, facts: ColladaFacts) -> str | None:
-    """Why a MeshCollider cannot be placed on the model's mesh as checked, if it cannot."""
-    node = facts.nodes[0]
-    if len(facts.nodes) > 1 or node.has_children:
-        return (
-            f"model {name} has several nodes: a collision needs every node's mesh, and "
-            "only a model of one node is checked against a Unity-written scene"
-        )
-    if node.geometries != 1:
-        return (
-            f"model {name}: its node {node.name!r} has {node.geometries} geometries, and "
-            "only a node with one is checked against a Unity-written scene"
-        )
-    if node.name != node.id or not _PLAIN_NAME.fullmatch(node.name):
-        return (
-            f"model {name}: its node's name {node.name!r} (id {node.id!r}) is not one "
-            "whose mesh name is checked (letters, digits and '_', the same as its id)"
-        )
+def _unchecked(drawn: tuple[DrawnNode, ...]) -> str | None:
+    """Why the objects of a model's drawn nodes do not follow from a rule seen in Unity's
+    files, if they do not: how the FBX SDK splits a node of several geometries into objects,
+    and what it names a node with neither name nor id, no Unity-written file here shows."""
+    for node in drawn:
+        if node.node.geometries > 1:
+            return (
+                f"its node {_shown(node.node)} draws {node.node.geometries} geometries, and "
+                "which objects Unity makes of them is not checked against a Unity-written file"
+            )
+        if "//" in node.path.removeprefix("//") or node.path.endswith("/"):
+            return (
+                "a node without name or id leads to its node "
+                f"{_shown(node.node)}, and what Unity names such a node is not checked"
+            )
     return None
+
+
+def _shown(node: ColladaNode) -> str:
+    return f"{node.name or node.id!r} (line {node.location.line})"
+
+
+def _local_position(position: Vector3, turned: t.Quaternion) -> Vector3:
+    """Where ROS#'s ``SetParentAndAlign`` leaves the instance's root: at the model's root
+    position in world axes, under a parent turned by ``turned`` (the links above it, posed
+    before this link is), so in its parent's axes that position turned back."""
+    if position == (0.0, 0.0, 0.0):
+        return position
+    inverse = (-turned[0], -turned[1], -turned[2], turned[3])
+    x, y, z = (t.f32(v) + 0.0 for v in rotate(inverse, position))
+    return (x, y, z)
+
+
+def _saved_rotation(rotation: t.Quaternion) -> t.Quaternion:
+    """A rotation as the scene saves the instance root's: float32, with the sign of zero that
+    re-parenting leaves on x, y and z (-0: the r2d2 and UR3 scenes, ``unity.transforms``'s
+    ``ALIGNED``). What double arithmetic leaves of an exact 0 (below 1e-9) is 0, as Unity's
+    float arithmetic has it."""
+    x, y, z, w = (t.f32(v) if abs(v) >= 1e-9 else 0.0 for v in rotation)
+    return (x or -0.0, y or -0.0, z or -0.0, w)
 
 
 def _inside_package(folder: PurePosixPath, image: PurePosixPath) -> PurePosixPath | None:
