@@ -455,35 +455,6 @@ def test_a_moved_model_root_under_a_turned_link_is_placed_in_the_link_s_axes(
     assert position == pytest.approx([0.0, 0.0, 1.0], abs=1e-6)
 
 
-def test_a_textured_material_on_a_mesh_visual_stays_refused(tmp_path: Path) -> None:
-    material = '<material name="skin"><texture filename="package://desc/skin.png"/></material>'
-    urdf = dae_robot(
-        tmp_path, collada(NODE.format("n"), geometries=GEOMETRY), "visual", material=material
-    )
-    assert "material 'skin' has a texture, which is not supported yet" in refusal(urdf, tmp_path)
-
-
-def test_a_model_s_textures_are_copied_if_they_exist_and_must_be_png(tmp_path: Path) -> None:
-    images = (
-        '<image id="a"><init_from>tex/a.png</init_from></image>'
-        '<image id="b"><init_from>missing.png</init_from></image>'
-    )
-    urdf = dae_robot(tmp_path, collada(NODE.format("n"), images=images), "visual")
-    (tmp_path / "desc" / "tex").mkdir()
-    (tmp_path / "desc" / "tex" / "a.png").write_bytes(b"\x89PNG")
-    result = import_robot(urdf, packages={}, project=tmp_path)
-    assert [a.path for a in result.model_assets] == ["desc/m.dae", "desc/tex/a.png"]
-    (tmp_path / "desc" / "tex" / "a.tga").write_bytes(b"TGA")
-    (tmp_path / "desc" / "m.dae").write_text(
-        collada(NODE.format("n"), images='<image id="a"><init_from>tex/a.tga</init_from></image>')
-    )
-    assert "only PNG textures" in refusal(urdf, tmp_path)
-    (tmp_path / "desc" / "m.dae").write_text(
-        collada(NODE.format("n"), images='<image id="a"><init_from>../../a.png</init_from></image>')
-    )
-    assert "outside its package folder" in refusal(urdf, tmp_path)
-
-
 def test_a_malformed_collada_file_is_located_in_it(tmp_path: Path) -> None:
     urdf = dae_robot(tmp_path, "<COLLADA><asset></COLLADA>\n", "visual")
     message = refusal(urdf, tmp_path)

@@ -1,17 +1,27 @@
 """A material of Unity's built-in Standard shader, as Unity 2022.3 saves one made in code.
 
 The layout is the one Unity wrote for the materials ROS#'s URDF importer made (``tests/urdf``):
-every Standard property at its default except the colour, metallic and smoothness given here.
+every Standard property at its default except the colour, metallic and smoothness given here,
+and the albedo texture (``_MainTex``) when one is given. A texture is referred to as Unity
+refers to an imported texture's Texture2D, ``{fileID: 2800000, guid: <its .meta's>, type: 3}``
+(a ``.mat`` Unity 2022.3.0 saved, docs/unity-yaml.md). The text is laid out by the
+``unity_assets/StandardMaterial.mat.jinja`` template from the data below.
 """
 
 from __future__ import annotations
 
+from unityscaffold.resources import template_environment
+from unityscaffold.unity._emit import flow_text
 from unityscaffold.unity._scalars import format_float, format_string
+from unityscaffold.unity.values import AssetRef, InlineMap
 
-__all__ = ["MATERIAL_FILE_ID", "standard_material"]
+__all__ = ["MATERIAL_FILE_ID", "TEXTURE_FILE_ID", "standard_material"]
 
 #: The fileID of the Material in its own ``.mat`` (class 21 × 100000).
 MATERIAL_FILE_ID = 2100000
+#: The fileID of the Texture2D an image file's TextureImporter makes (class 28 × 100000).
+TEXTURE_FILE_ID = 2800000
+_TYPE_IMPORTED = 3  # a reference to an object an importer made from a source file
 _TEXTURES = (
     "_BumpMap",
     "_DetailAlbedoMap",
@@ -41,6 +51,8 @@ _FLOATS = (
     ("_UVSec", 0.0),
     ("_ZWrite", 1.0),
 )
+_NO_TEXTURE = "{fileID: 0}"
+_BLACK = (0.0, 0.0, 0.0, 1.0)
 
 
 def standard_material(
@@ -49,33 +61,31 @@ def standard_material(
     *,
     metallic: float = 0.0,
     smoothness: float = 0.5,
+    main_texture: str | None = None,
 ) -> str:
-    """The text of ``<name>.mat``: a Standard material with ``color`` (r, g, b, a)."""
-    textures = "".join(
-        f"    - {texture}:\n        m_Texture: {{fileID: 0}}\n"
-        "        m_Scale: {x: 1, y: 1}\n        m_Offset: {x: 0, y: 0}\n"
-        for texture in _TEXTURES
-    )
+    """The text of ``<name>.mat``: a Standard material with ``color`` (r, g, b, a) and, when
+    ``main_texture`` (a texture's GUID) is given, that texture as its albedo (``_MainTex``,
+    what Unity's ``Material.mainTexture`` sets)."""
+    albedo = _NO_TEXTURE
+    if main_texture is not None:
+        albedo = _flow(AssetRef(TEXTURE_FILE_ID, main_texture, _TYPE_IMPORTED))
     chosen = {"_Glossiness": smoothness, "_Metallic": metallic}
-    floats = "".join(
-        f"    - {key}: {format_float(chosen[key] if value is None else value)}\n"
-        for key, value in _FLOATS
+    template = template_environment().get_template("unity_assets/StandardMaterial.mat.jinja")
+    return template.render(
+        file_id=MATERIAL_FILE_ID,
+        name=format_string(name, column=10),
+        textures=[(t, albedo if t == "_MainTex" else _NO_TEXTURE) for t in _TEXTURES],
+        floats=[(k, format_float(chosen[k] if v is None else v)) for k, v in _FLOATS],
+        colours=[("_Color", _colour(color)), ("_EmissionColor", _colour(_BLACK))],
     )
-    r, g, b, a = (format_float(v) for v in color)
-    return (
-        "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n"
-        f"--- !u!21 &{MATERIAL_FILE_ID}\nMaterial:\n  serializedVersion: 8\n"
-        "  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n"
-        "  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n"
-        f"  m_Name: {format_string(name, column=10)}\n"
-        "  m_Shader: {fileID: 46, guid: 0000000000000000f000000000000000, type: 0}\n"
-        "  m_Parent: {fileID: 0}\n  m_ModifiedSerializedProperties: 0\n"
-        "  m_ValidKeywords: []\n  m_InvalidKeywords: []\n  m_LightmapFlags: 4\n"
-        "  m_EnableInstancingVariants: 0\n  m_DoubleSidedGI: 0\n  m_CustomRenderQueue: -1\n"
-        "  stringTagMap: {}\n  disabledShaderPasses: []\n  m_LockedProperties: \n"
-        "  m_SavedProperties:\n    serializedVersion: 3\n"
-        f"    m_TexEnvs:\n{textures}    m_Ints: []\n    m_Floats:\n{floats}"
-        f"    m_Colors:\n    - _Color: {{r: {r}, g: {g}, b: {b}, a: {a}}}\n"
-        "    - _EmissionColor: {r: 0, g: 0, b: 0, a: 1}\n"
-        "  m_BuildTextureStacks: []\n"
-    )
+
+
+def _colour(rgba: tuple[float, float, float, float]) -> str:
+    r, g, b, a = rgba
+    return _flow(InlineMap.of(r=r, g=g, b=b, a=a))
+
+
+def _flow(value: AssetRef | InlineMap) -> str:
+    text = flow_text(value)
+    assert text is not None  # a reference or an inline map always has one
+    return text

@@ -58,7 +58,8 @@ class ComponentRef:
 
 @dataclass(frozen=True, slots=True)
 class MaterialRef:
-    """``Materials/<name>.mat`` in the robot's asset folder (ROS#'s ``UrdfMaterial``)."""
+    """``Materials/<name>.mat`` in the robot's asset folder (ROS#'s ``UrdfMaterial``): ``name``
+    is the file's, which ``urdf._material_names`` makes of the material's."""
 
     name: str
 
@@ -277,16 +278,15 @@ def part_components(geometry: Geometry, *, visual: bool) -> list[ImportedCompone
 
 
 def geometry_components(
-    geometry: Geometry, material: Material | None, *, visual: bool
+    geometry: Geometry, material: MaterialRef | None, *, visual: bool
 ) -> list[ImportedComponent]:
-    """A primitive's renderer or a collider (a mesh's model instance has none of its own)."""
+    """A primitive's renderer (with the visual's ``material``) or a collider (a mesh's model
+    instance has none of its own)."""
     if isinstance(geometry, Mesh):
         return []
     if visual:
         mesh = AssetRef(_PRIMITIVE_MESHES[type(geometry)], _PRIMITIVES, 0)
-        chosen: Value = (
-            DEFAULT_MATERIAL if material is None else MaterialRef(material_name(material))
-        )
+        chosen: Value = DEFAULT_MATERIAL if material is None else material
         return [
             ImportedComponent("MeshFilter", (("m_Mesh", mesh),)),
             # CreatePrimitive called from an editor script leaves the renderer's UVs preserved

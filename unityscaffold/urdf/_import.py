@@ -4,17 +4,21 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path, PurePosixPath
 
+from unityscaffold.errors import DiagnosticSink, LocatedError
 from unityscaffold.unity.prefabinstance import ModelInstance
+from unityscaffold.urdf._assets import PlannedAsset
 from unityscaffold.urdf._configurable import refuse_unchecked_joints
 from unityscaffold.urdf._load import read_urdf
-from unityscaffold.urdf._packages import ResolvedMesh, resolve_meshes
+from unityscaffold.urdf._packages import ResolvedMesh, resolve_file, resolve_meshes
 from unityscaffold.urdf.materials import importer_materials
 from unityscaffold.urdf.model import Robot
-from unityscaffold.urdf.models import ModelAsset, model_plan
+from unityscaffold.urdf.models import model_plan
 from unityscaffold.urdf.objects import ImportedObject, importer_tree
 from unityscaffold.urdf.stl import stl_mesh_assets
+from unityscaffold.urdf.textures import material_textures
 
 __all__ = ["RobotImport", "import_robot"]
 
@@ -29,8 +33,9 @@ class RobotImport:
 
     ``models`` holds what each mesh geometry object (role ``MODEL``) is, by its key: the
     instance of a prefab or model to place there (``unity.prefabinstance``), whose source is
-    one of ``model_assets``: the STL prefabs and the copied ``.dae`` files and textures, which
-    need the GUIDs of other assets to be written (``urdf.models``).
+    one of ``model_assets``: the files that need the GUIDs of other assets to be written, or
+    are copies (the STL prefabs and the copied ``.dae`` files, ``urdf.models``; the textures,
+    ``urdf.textures``; and the ``.mat`` of each material of a texture, ``urdf.materials``).
     """
 
     robot: Robot
@@ -38,7 +43,7 @@ class RobotImport:
     files: Mapping[str, str]
     meshes: Mapping[str, ResolvedMesh]
     models: Mapping[str, ModelInstance] = field(default_factory=dict)
-    model_assets: tuple[ModelAsset, ...] = ()
+    model_assets: tuple[PlannedAsset, ...] = ()
 
 
 def import_robot(
@@ -57,7 +62,34 @@ def import_robot(
     robot = read_urdf(urdf, packages=packages, xacro_args=xacro_args, xacro_env=xacro_env)
     refuse_unchecked_joints(robot)
     meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
-    files = {f"Materials/{name}": text for name, text in importer_materials(robot).items()}
+    materials = importer_materials(robot)
+    files = {m.path: m.text() for m in materials if m.textured is None}
+    counts = _stl_files(meshes, files)
+    sink = DiagnosticSink()  # the materials' and the models' problems, reported together
+    find = partial(resolve_file, urdf=urdf, packages=packages, project=project, kind="texture")
+    textured = tuple(material_textures(materials, find, sink))
+    try:
+        plan = model_plan(robot, meshes, counts)
+    except LocatedError as error:
+        sink.diagnostics.extend(error.diagnostics)
+    sink.raise_if_errors()
+    objects = importer_tree(robot, plugin_newline=plugin_newline)
+    # a texture both a model and a material name is one file
+    copied = {asset.path: asset for asset in (*plan.assets, *textured)}
+    return RobotImport(
+        robot,
+        objects,
+        dict(sorted(files.items())),
+        meshes,
+        plan.instances,
+        tuple(copied[path] for path in sorted(copied)),
+    )
+
+
+def _stl_files(
+    meshes: Mapping[str, ResolvedMesh], files: dict[str, str]
+) -> dict[ResolvedMesh, int]:
+    """Each STL file's Mesh assets added to ``files``; how many each file was cut into."""
     counts: dict[ResolvedMesh, int] = {}
     for mesh in sorted(set(meshes.values()), key=lambda m: (m.package, str(m.relative))):
         if mesh.relative.suffix.lower() == ".stl":
@@ -66,8 +98,4 @@ def import_robot(
             counts[mesh] = len(assets)
             for name, text in assets:
                 files[str(folder / name)] = text
-    plan = model_plan(robot, meshes, counts)
-    objects = importer_tree(robot, plugin_newline=plugin_newline)
-    return RobotImport(
-        robot, objects, dict(sorted(files.items())), meshes, plan.instances, plan.assets
-    )
+    return counts

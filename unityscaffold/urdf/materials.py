@@ -2,72 +2,96 @@
 
 ``Default`` (grey, transparent: what a mesh visual without a material of its own gets), one
 per top-level ``<material>``, and one per material a visual defines inline under a name not
-yet taken: the first definition of a name wins, as ROS# reuses a ``.mat`` that exists. A
-material without a name is named after its colour (``rgba-1-0-0-1``) or texture. All are
-Standard materials with ROS#'s metallic and smoothness of 0.75.
+yet taken: the first definition of a ``.mat`` wins, as ROS# reuses a ``.mat`` that exists. A
+material without a name is named after its colour (``rgba-1-0-0-1``) or texture
+(``texture-<file>``); the file a name becomes is ``_material_names``'. All are Standard
+materials with ROS#'s metallic and smoothness of 0.75 (``UrdfMaterial.InitializeMaterial``).
+
+As ``UrdfMaterial.CreateMaterial`` does, a material with a ``<color>`` takes that colour and
+ignores its ``<texture>``; one with a ``<texture>`` alone keeps Standard's white and has the
+texture as its albedo (``material.mainTexture``). That ``.mat`` names the texture's GUID, so it
+is written with the texture (``TexturedMaterialAsset``, ``urdf.textures``).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from dataclasses import dataclass
 
-from unityscaffold.errors import LocatedError
-from unityscaffold.unity.material import standard_material
+from unityscaffold.unity.material import MATERIAL_FILE_ID, standard_material
+from unityscaffold.unity.meta import native_format_meta
+from unityscaffold.urdf._assets import GuidOf
 from unityscaffold.urdf._components import material_name
-from unityscaffold.urdf.model import Link, Material, Robot
+from unityscaffold.urdf._material_names import (
+    DEFAULT_MATERIAL_NAME,
+    material_stems,
+    ordered_materials,
+)
+from unityscaffold.urdf.model import Material, Robot
 
-__all__ = ["DEFAULT_MATERIAL_NAME", "importer_materials"]
+__all__ = [
+    "DEFAULT_MATERIAL_NAME",
+    "ImporterMaterial",
+    "TexturedMaterialAsset",
+    "importer_materials",
+    "material_stems",
+]
 
-DEFAULT_MATERIAL_NAME = "Default"
-_DEFAULT_COLOR = (0.33, 0.33, 0.33, 0.0)
+Rgba = tuple[float, float, float, float]
+_DEFAULT_COLOR: Rgba = (0.33, 0.33, 0.33, 0.0)
+_WHITE: Rgba = (1.0, 1.0, 1.0, 1.0)  # a new Standard material's colour
 
 
-def importer_materials(robot: Robot) -> dict[str, str]:
-    """``{file name: text}`` of every ``.mat`` file, by name."""
-    colours: dict[str, tuple[float, float, float, float]] = {DEFAULT_MATERIAL_NAME: _DEFAULT_COLOR}
-    for material in (*robot.materials, *_visual_materials(robot, robot.root)):
-        name = material_name(material)
-        if name in colours:
+@dataclass(frozen=True, slots=True)
+class ImporterMaterial:
+    """One ``.mat``: its file's name (``stem``), its colour and, for a material of a texture
+    alone, that ``<material>`` (whose ``texture`` is the albedo's file)."""
+
+    stem: str
+    color: Rgba
+    textured: Material | None = None
+
+    @property
+    def path(self) -> str:
+        """The file's path in the robot's asset folder."""
+        return f"Materials/{self.stem}.mat"
+
+    def text(self, texture_guid: str | None = None) -> str:
+        """The ``.mat`` text; ``texture_guid`` is the albedo texture's, for a textured one."""
+        return standard_material(
+            self.stem, self.color, metallic=0.75, smoothness=0.75, main_texture=texture_guid
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class TexturedMaterialAsset:
+    """A textured material's ``.mat``, written once the GUID of its texture (``texture``, a
+    path in the robot's asset folder) is known."""
+
+    material: ImporterMaterial
+    texture: str
+
+    @property
+    def path(self) -> str:
+        return self.material.path
+
+    def content(self, guid_of: GuidOf) -> bytes:
+        return self.material.text(guid_of(self.texture)).encode("utf-8")
+
+    def meta(self, guid: str) -> str:
+        return native_format_meta(guid, MATERIAL_FILE_ID)
+
+
+def importer_materials(robot: Robot) -> tuple[ImporterMaterial, ...]:
+    """Every ``.mat`` of ``robot``, by file name."""
+    stems = material_stems(robot)
+    made = {DEFAULT_MATERIAL_NAME: ImporterMaterial(DEFAULT_MATERIAL_NAME, _DEFAULT_COLOR)}
+    for material in ordered_materials(robot):
+        stem = stems[material_name(material)]
+        if stem in made:
             continue
-        _check_file_name(material, name)
-        if material.color is None and material.texture is not None:
-            raise LocatedError.at(
-                material.location,
-                f"material {name!r} has a texture, which is not supported yet",
-                hint='give the material a <color rgba="…"/> instead',
-            )
-        colours[name] = material.color or (1.0, 1.0, 1.0, 1.0)  # Standard's own white
-    return {
-        f"{name}.mat": standard_material(name, colour, metallic=0.75, smoothness=0.75)
-        for name, colour in sorted(colours.items())
-    }
-
-
-# Unity refuses these in an asset's name on every platform; a separator or '..' would put the
-# .mat file outside the Materials folder
-_NOT_IN_FILE_NAMES = frozenset('/\\:*?"<>|')
-
-
-def _check_file_name(material: Material, name: str) -> None:
-    bad = sorted({c for c in name if c in _NOT_IN_FILE_NAMES or not c.isprintable()})
-    if name.strip(". ") and not bad:
-        return
-    shown = ", ".join(repr(c) for c in bad) if bad else "no letters" if name else "no name"
-    raise LocatedError.at(
-        material.location,
-        f"material {name!r} cannot name its .mat file ({shown})",
-        hint="rename the material with letters, digits, '_', '-' or spaces",
-    )
-
-
-def _visual_materials(robot: Robot, root: Link) -> Iterator[Material]:
-    """Visual materials in the order ROS# builds the links (depth first, by joint order)."""
-    named = {link.name: link for link in reversed(robot.links)}  # the first of a name wins
-    children: dict[str, list[str]] = {}
-    for joint in robot.joints:
-        children.setdefault(joint.parent, []).append(joint.child)
-    stack = [root]
-    while stack:
-        link = stack.pop()
-        yield from (visual.material for visual in link.visuals if visual.material is not None)
-        stack += [named[child] for child in reversed(children.get(link.name, []))]
+        # ROS# loads no texture for an empty filename (UrdfMaterial.LoadTexture)
+        if material.color is None and material.texture:
+            made[stem] = ImporterMaterial(stem, _WHITE, material)
+        else:
+            made[stem] = ImporterMaterial(stem, material.color or _WHITE)
+    return tuple(made[stem] for stem in sorted(made))

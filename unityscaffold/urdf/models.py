@@ -9,14 +9,15 @@ mesh (concave) and removes the MeshRenderer and the MeshFilter. A scene records 
   here with its Mesh assets (``urdf.stl``): the ``.stl`` itself is not copied, so Unity never
   runs that post-processor over these files;
 - for a COLLADA file, the model Unity imports from the copied ``.dae`` (with the ``.meta`` of
-  ``unity.importers``, and the PNG textures its images name), whose objects have the fileIDs
-  of ``unity.modelids``.
+  ``unity.importers``, and the textures its images name, ``urdf.textures``), whose objects
+  have the fileIDs of ``unity.modelids``.
 
 A visual's ``<material>`` is put on every renderer of the instance, as ROS#'s
 ``UrdfMaterial.SetMaterial`` does by setting ``sharedMaterial``: Unity records that as a change
 of each renderer's first material slot to the robot's ``Materials/<name>.mat``
-(``unity.prefabinstance.material_modifications``), kept among the instance's other changes in
-Unity's order. Without one the model keeps its own materials.
+(``unity.prefabinstance.material_modifications``; the file's name is ``urdf.materials``'),
+kept among the instance's other changes in Unity's order. Without one the model keeps its own
+materials. A textured ``<material>`` is one such ``.mat``, like any other.
 
 A COLLADA model's root is posed as Unity imports it and ROS#'s post-processor turns it, and
 its inner objects have the fileIDs of the model's node tree (``urdf.colladamodel``, which says
@@ -26,8 +27,8 @@ MeshCollider to each node that draws, and a ``<material>`` goes on each node's r
 The rest is a located error saying why: other formats (``.obj``, ``.fbx``: Unity's own import,
 no saved scene to check), a collision or ``<material>`` on a model with a node of several
 geometries or a drawn node below one without name or id (which objects Unity makes of them is
-not checked), other texture formats. A textured ``<material>`` is refused for every visual
-(``urdf.materials``).
+not checked), and textures Unity imports with another importer than its TextureImporter
+(``urdf.textures``). A textured ``<material>`` is one more ``.mat`` (``urdf.materials``).
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import DiagnosticSink, SourceLocation
-from unityscaffold.unity.importers import model_meta, texture_meta
+from unityscaffold.unity.importers import model_meta
 from unityscaffold.unity.material import MATERIAL_FILE_ID
 from unityscaffold.unity.mesh import MESH_FILE_ID
 from unityscaffold.unity.modelids import ROOT_PATH, model_file_id
@@ -50,11 +51,14 @@ from unityscaffold.unity.prefabinstance import (
 )
 from unityscaffold.unity.stlprefab import StlPrefab, prefab_meta, stl_prefab, stl_prefab_text
 from unityscaffold.urdf import transforms as t
+from unityscaffold.urdf._assets import PlannedAsset
 from unityscaffold.urdf._components import MaterialRef, material_name
+from unityscaffold.urdf._material_names import material_stems
 from unityscaffold.urdf._packages import ResolvedMesh
 from unityscaffold.urdf.collada import ColladaFacts, ColladaNode, read_collada
 from unityscaffold.urdf.colladamodel import DrawnNode, drawn_nodes, imported_root_pose, rotate, turn
 from unityscaffold.urdf.model import Material, Mesh, Robot, Vector3, Visual
+from unityscaffold.urdf.textures import model_textures
 
 __all__ = ["ModelAsset", "ModelPlan", "model_plan"]
 
@@ -69,7 +73,7 @@ GuidOf = Callable[[str], str]
 class ModelAsset:
     """A file the import puts into the robot's asset folder at ``path`` besides the text
     assets: the STL prefab (rendered once the GUIDs of its ``meshes`` are known), or a copy of
-    ``source`` (a model when ``global_scale`` is set, else a texture)."""
+    the model ``source`` (imported at ``global_scale``)."""
 
     path: str
     source: Path | None = None
@@ -88,9 +92,8 @@ class ModelAsset:
         """The text of the file's ``.meta`` with ``guid``."""
         if self.prefab is not None:
             return prefab_meta(guid)
-        if self.global_scale is not None:
-            return model_meta(guid, self.global_scale)
-        return texture_meta(guid)
+        assert self.global_scale is not None
+        return model_meta(guid, self.global_scale)
 
 
 @dataclass(frozen=True, slots=True)
@@ -99,7 +102,7 @@ class ModelPlan:
     the object's key (``link[2]/collision[0]/shape``); ``assets``: the files they need."""
 
     instances: Mapping[str, ModelInstance]
-    assets: tuple[ModelAsset, ...]
+    assets: tuple[PlannedAsset, ...]
 
 
 def model_plan(
@@ -111,7 +114,7 @@ def model_plan(
     filename, ``stl_meshes`` says into how many Mesh assets each STL file was cut. Every
     geometry that cannot be made as checked is one located error."""
     sink = DiagnosticSink()
-    builder = _Builder(sink, stl_meshes)
+    builder = _Builder(sink, stl_meshes, material_stems(robot))
     turns = _creation_turns(robot)
     instances: dict[str, ModelInstance] = {}
     for key, link, mesh, visual in _mesh_parts(robot):
@@ -160,10 +163,16 @@ def _creation_turns(robot: Robot) -> dict[str, t.Quaternion]:
 class _Builder:
     """Makes each instance, and each asset once."""
 
-    def __init__(self, sink: DiagnosticSink, stl_meshes: Mapping[ResolvedMesh, int]) -> None:
+    def __init__(
+        self,
+        sink: DiagnosticSink,
+        stl_meshes: Mapping[ResolvedMesh, int],
+        material_stems: Mapping[str, str],
+    ) -> None:
         self.sink = sink
         self.stl_meshes = stl_meshes
-        self.assets: dict[str, ModelAsset] = {}
+        self.material_stems = material_stems  # each material's .mat file name
+        self.assets: dict[str, ModelAsset | PlannedAsset] = {}
         self.collada: dict[Path, ColladaFacts] = {}
         self.made: dict[tuple[ResolvedMesh, bool, t.Quaternion], ModelInstance | None] = {}
         # each asset path in lower case, with the mesh that first wrote there
@@ -229,7 +238,8 @@ class _Builder:
         """A visual's instance with its URDF material on every renderer of the model, as
         ROS#'s ``UrdfMaterial.SetMaterial`` sets ``sharedMaterial`` on each: a renderer's
         first slot (``Renderer.sharedMaterial`` is its first material)."""
-        prefab = self.assets[instance.source].prefab  # an STL's, made with its instance
+        made = self.assets[instance.source]  # an STL's prefab or the model, with its instance
+        prefab = made.prefab if isinstance(made, ModelAsset) else None
         if prefab is not None:
             renderers = tuple(part.renderer for part in prefab.parts)
         else:
@@ -238,7 +248,8 @@ class _Builder:
             if drawn is None:
                 return None
             renderers = tuple(node.renderer for node in drawn)
-        mat = AssetObject(MaterialRef(material_name(material)).path, MATERIAL_FILE_ID, _TYPE_NATIVE)
+        ref = MaterialRef(self.material_stems[material_name(material)])
+        mat = AssetObject(ref.path, MATERIAL_FILE_ID, _TYPE_NATIVE)
         return instance.with_changes(material_modifications(renderers, mat))
 
     def _stl(self, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance:
@@ -315,31 +326,8 @@ class _Builder:
         return None
 
     def _textures(self, mesh: Mesh, resolved: ResolvedMesh, facts: ColladaFacts) -> None:
-        """Copy the images the model names that exist beside it (Unity imports the model
-        without a missing one, as the r2d2 sample's normal maps are)."""
-        for image in facts.images:
-            inside = _inside_package(resolved.relative.parent, image)
-            if inside is None:
-                self.sink.error(
-                    mesh.location,
-                    f"model {mesh.filename!r} names the image {str(image)!r} outside its "
-                    "package folder",
-                    hint="keep the model's textures beside it, named by relative paths",
-                )
-                continue
-            source = resolved.path.parent / image
-            if not source.is_file():
-                continue
-            if image.suffix.lower() != ".png":
-                self.sink.error(
-                    mesh.location,
-                    f"model {mesh.filename!r} uses the texture {str(image)!r}: only PNG "
-                    "textures' import settings are checked against Unity's",
-                    hint="convert the texture to PNG and name it so in the model",
-                )
-                continue
-            path = str(PurePosixPath(resolved.package) / inside)
-            self.assets.setdefault(path, ModelAsset(path, source))
+        for texture in model_textures(mesh, resolved, facts.images, self.sink):
+            self.assets.setdefault(texture.path, texture)
 
 
 def _unchecked(drawn: tuple[DrawnNode, ...]) -> str | None:
@@ -382,18 +370,3 @@ def _saved_rotation(rotation: t.Quaternion) -> t.Quaternion:
     float arithmetic has it."""
     x, y, z, w = (t.f32(v) if abs(v) >= 1e-9 else 0.0 for v in rotation)
     return (x or -0.0, y or -0.0, z or -0.0, w)
-
-
-def _inside_package(folder: PurePosixPath, image: PurePosixPath) -> PurePosixPath | None:
-    """``folder / image`` with ``..`` resolved, or None if it leaves the package."""
-    if image.is_absolute() or ":" in str(image):
-        return None
-    parts: list[str] = []
-    for part in (*folder.parts, *image.parts):
-        if part == "..":
-            if not parts:
-                return None
-            parts.pop()
-        elif part != ".":
-            parts.append(part)
-    return PurePosixPath(*parts)

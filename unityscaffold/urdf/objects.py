@@ -37,9 +37,11 @@ from unityscaffold.urdf._components import (
     geometry_components,
     joint_components,
     link_components,
+    material_name,
     part_components,
     plugin_components,
 )
+from unityscaffold.urdf._material_names import material_stems
 from unityscaffold.urdf.model import (
     Box,
     Collision,
@@ -47,7 +49,6 @@ from unityscaffold.urdf.model import (
     Geometry,
     Joint,
     Link,
-    Material,
     Mesh,
     Robot,
     Sphere,
@@ -138,9 +139,11 @@ def importer_tree(robot: Robot, *, plugin_newline: str = "\r\n") -> ImportedObje
 
 class _Links:
     """The robot's links by name (the first of a name, as ROS# finds it) and the joints
-    under each link in document order: looked up once per link, not searched."""
+    under each link in document order: looked up once per link, not searched. With them, the
+    ``.mat`` file each material name became."""
 
     def __init__(self, robot: Robot) -> None:
+        self.material_stems = material_stems(robot)  # each material's .mat file name
         self.index: dict[str, int] = {}
         self.named: dict[str, Link] = {}
         for i, link in enumerate(robot.links):
@@ -196,7 +199,7 @@ def _link(
         f"{key}/visuals",
         LocalTransform(),
         (ImportedComponent("UrdfVisuals"),),
-        tuple(_part(v, f"{key}/visual[{i}]") for i, v in enumerate(link.visuals)),
+        tuple(_part(links, v, f"{key}/visual[{i}]") for i, v in enumerate(link.visuals)),
         not_editable=True,
     )
     collisions = ImportedObject(
@@ -205,7 +208,7 @@ def _link(
         f"{key}/collisions",
         LocalTransform(),
         (ImportedComponent("UrdfCollisions"),),
-        tuple(_part(c, f"{key}/collision[{i}]") for i, c in enumerate(link.collisions)),
+        tuple(_part(links, c, f"{key}/collision[{i}]") for i, c in enumerate(link.collisions)),
         not_editable=True,
     )
     return ImportedObject(
@@ -213,14 +216,16 @@ def _link(
     )
 
 
-def _part(part: Visual | Collision, key: str) -> ImportedObject:
+def _part(links: _Links, part: Visual | Collision, key: str) -> ImportedObject:
     visual = isinstance(part, Visual)
     pose = LocalTransform(
         t.origin_position(part.origin),
         t.origin_rotation(part.origin),
         t.geometry_scale(part.geometry),
     )
-    material = part.material if isinstance(part, Visual) else None
+    material = None
+    if isinstance(part, Visual) and part.material is not None:
+        material = MaterialRef(links.material_stems[material_name(part.material)])
     return ImportedObject(
         (part.name or "unnamed") if visual else "unnamed",
         Role.VISUAL if visual else Role.COLLISION,
@@ -236,7 +241,7 @@ _COLLISION_SHAPES = {Box: "Box", Cylinder: "Cylinder", Sphere: "Sphere"}
 
 
 def _shape(
-    geometry: Geometry, material: Material | None, key: str, *, visual: bool
+    geometry: Geometry, material: MaterialRef | None, key: str, *, visual: bool
 ) -> ImportedObject:
     components = tuple(geometry_components(geometry, material, visual=visual))
     if isinstance(geometry, Mesh):

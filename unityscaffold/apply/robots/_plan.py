@@ -48,11 +48,13 @@ class PlannedRobot:
         """The native assets it writes (``.mat`` materials, Mesh ``.asset`` files) by project
         path, as a field refers to them: known from the plan, so that an ``objects:`` entry can
         name one on the apply that first writes it (its ``.meta`` is not on disk yet)."""
+        copied = (asset.path for asset in self.imported.model_assets)  # a textured .mat
+        native = [*self.imported.files, *(p for p in copied if PurePosixPath(p).suffix == ".mat")]
         return {
             f"{self.assets}/{relative}": AssetRef(
                 _MAIN_OBJECT[PurePosixPath(relative).suffix], self.guids[relative], 2
             )
-            for relative in self.imported.files
+            for relative in native
         }
 
 
