@@ -298,3 +298,57 @@ def test_a_texture_resolves_like_a_mesh(project: Path) -> None:
     (diagnostic,) = caught.value.diagnostics
     assert diagnostic.location == where
     assert diagnostic.message.startswith("texture 'package://desc/textures/oak.png' names a file")
+
+
+def test_without_a_package_xml_the_hint_names_the_folder_of_the_urdf_and_the_file(
+    project: Path,
+) -> None:
+    # Unitree's robots/a2_description/urdf/a2.urdf names its meshes ../meshes/base_link.STL and
+    # ships no package.xml (https://github.com/unitreerobotics/unitree_ros)
+    build_tree(
+        project,
+        {
+            "ros/a2_description/urdf/a2.urdf": "",
+            "ros/a2_description/meshes/base_link.STL": "solid b\nendsolid b\n",
+        },
+    )
+    robot = parse_urdf(robot_with_meshes("../meshes/base_link.STL"), "a2.urdf")
+    with pytest.raises(LocatedError) as caught:
+        resolve_meshes(
+            robot, urdf=project / "ros/a2_description/urdf/a2.urdf", packages={}, project=project
+        )
+    (diagnostic,) = caught.value.diagnostics
+    assert diagnostic.hint == (
+        "add its package to the entry's `packages` (a2_description: ros/a2_description, "
+        "relative to the manifest), or name it package://a2_description/meshes/base_link.STL"
+    )
+    # and with that package the file is the package's
+    found = resolve_meshes(
+        robot,
+        urdf=project / "ros/a2_description/urdf/a2.urdf",
+        packages={"a2_description": project / "ros/a2_description"},
+        project=project,
+    )
+    assert found["../meshes/base_link.STL"] == ResolvedMesh(
+        "a2_description",
+        PurePosixPath("meshes/base_link.STL"),
+        (project / "ros/a2_description/meshes/base_link.STL").resolve(),
+    )
+
+
+def test_a_path_into_an_install_space_gets_a_hint_naming_its_package_uri(project: Path) -> None:
+    # Kinova's ros2_kortex commits kortex_description/robots/gen3_2f85.urdf as xacro expanded it
+    # on another machine: file:///root/c3pzero_ws/install/kortex_description/share/
+    # kortex_description/arms/gen3/7dof/meshes/base_link.dae
+    # (https://github.com/Kinovarobotics/ros2_kortex); ament installs a package's files in
+    # <prefix>/share/<package>/
+    uri = "file:///root/ws/install/desc/share/desc/meshes/arm.stl"
+    (diagnostic,) = refusals(project, uri)
+    assert "(file URI) is outside the project: /root/ws/install/desc/share/desc/meshes/arm.stl" in (
+        diagnostic.message
+    )
+    assert diagnostic.hint == (
+        "it is package desc's file as installed on another machine: write "
+        "package://desc/meshes/arm.stl, or import the .xacro it was expanded from (its "
+        "$(find desc) is then the package's folder in the repository)"
+    )

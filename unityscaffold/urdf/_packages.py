@@ -171,7 +171,8 @@ def _on_disk(
             where,
             filename,
             f"({named.form}) is outside the project: {real}",
-            f"keep the files a URDF names inside {project} so the import is reproducible",
+            _installed_hint(named.path, look)
+            or f"keep the files a URDF names inside {project} so the import is reproducible",
         )
         return None
     held = _holder(named.path, real, look)
@@ -181,10 +182,27 @@ def _on_disk(
             filename,
             f"({named.form}) lies in none of this robot's packages, so it has no asset path "
             f"(looked in: {_looked_in(look, project)})",
-            _add_package_hint(real, project),
+            _add_package_hint(real, project, look.urdf),
         )
         return None
     return _in_package(look, filename, where, held[0], held[1])
+
+
+def _installed_hint(path: Path, look: _Lookup) -> str | None:
+    """For a path into a ROS install or devel space (``<prefix>/share/<package>/…``, where
+    catkin and ament put a package's files) of one of the robot's packages, which is what a
+    URDF expanded on another machine names: the ``package://`` of that file."""
+    parts = path.parts
+    for at in range(len(parts) - 3, -1, -1):
+        name = parts[at + 1]
+        if parts[at] == "share" and _package_folder(name, look.urdf, look.packages) is not None:
+            inside = "/".join(parts[at + 2 :])
+            return (
+                f"it is package {name}'s file as installed on another machine: write "
+                f"package://{name}/{inside}, or import the .xacro it was expanded from (its "
+                f"$(find {name}) is then the package's folder in the repository)"
+            )
+    return None
 
 
 def _holder(path: Path, real: Path, look: _Lookup) -> tuple[InPackage, Path] | None:
@@ -241,9 +259,11 @@ def _looked_in(look: _Lookup, project: Path) -> str:
 _PACKAGE_NAME = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
 
 
-def _add_package_hint(path: Path, project: Path) -> str:
-    """What to add to ``packages``: the ROS package (a folder with a ``package.xml``) that
-    holds ``path``, when there is one in the project."""
+def _add_package_hint(path: Path, project: Path, urdf: Path) -> str:
+    """What to add to ``packages`` for the file at ``path``: the ROS package (a folder with a
+    ``package.xml``, named by its ``<name>``) that holds it; else the folder that holds both
+    it and the URDF (``x_description`` of ``x_description/urdf/x.urdf`` and
+    ``../meshes/base.stl``, the usual layout), named as itself."""
     for folder in path.parents:
         if not _inside(folder, project):
             break
@@ -251,13 +271,20 @@ def _add_package_hint(path: Path, project: Path) -> str:
         if manifest.is_file():
             match = _PACKAGE_NAME.search(manifest.read_bytes())
             name = match[1].decode("utf-8", "replace") if match else folder.name
-            return (
-                f"add its package to the entry's `packages` ({name}: "
-                f"{_shown(folder, project)}, relative to the manifest), or name it "
-                f"package://{name}/{path.relative_to(folder).as_posix()}"
-            )
+            return _package_hint(name, folder, path, project)
+    common = Path(os.path.commonpath([path, urdf.parent.resolve()]))
+    if _inside(common, project) and common != project:
+        return _package_hint(common.name, common, path, project)
     return (
         "add the package that holds it to the entry's `packages` "
         "(<package>: <its folder, relative to the manifest>), or name it "
         "package://<package>/<path>"
+    )
+
+
+def _package_hint(name: str, folder: Path, path: Path, project: Path) -> str:
+    return (
+        f"add its package to the entry's `packages` ({name}: {_shown(folder, project)}, "
+        f"relative to the manifest), or name it "
+        f"package://{name}/{path.relative_to(folder).as_posix()}"
     )
