@@ -5,8 +5,8 @@ reads, ``UrdfAssetPathHandler.GetRelativeAssetPathFromUrdfPath``) and ``$(find p
 xacro substitution left in a plain URDF). A file on disk: a ``file:`` URI (RFC 8089:
 ``file:///abs``, ``file://localhost/abs``, ``file:/abs``, percent-encoded), which is what
 ``file://$(find pkg)/…`` becomes once xacro expands it, an absolute path, or a path relative to
-the URDF's folder, as ``urdfdom`` users (RViz, Gazebo) read one. Which package holds a file on
-disk is ``_packages``' to find.
+the URDF's folder (``../meshes/base.stl``, as some descriptions ship). Which package holds a
+file on disk is ``_packages``' to find.
 
 A ``\\`` is a folder separator in every form: ROS#'s ``SetSeparatorChar`` leaves it one on
 Windows, where its samples were made, and a URDF is meant to name the same file everywhere.
