@@ -16,11 +16,17 @@ the cost per topic should stay flat as N grows.
 
 Robots: `robots:` entries applied into a scene from clean (scene, lock and the robot's assets
 reset) and the no-op re-apply, as whole processes: ROS#'s r2d2 (the tutorial's URDF and its two
-COLLADA models, read from $UNITYSCAFFOLD_VENDOR or ../shared/vendor), a generated robot of 500
-links (bench_urdf's) and one of 500 links with STL visuals and collisions (bench_models', 50
-files of 2,000 facets). Aims: r2d2 from clean under 1 s, its no-op within the sample's no-op aim.
+COLLADA models, read from $UNITYSCAFFOLD_VENDOR or ../shared/vendor); the largest real
+descriptions of the robot survey (--large; by default PR2: 92 links, 57 visuals and 61
+collisions, TIAGo: 89 links, TALOS: 68 links, each from its xacro, mostly COLLADA and STL
+models), read from the survey's checkouts (see robot_survey.py) and left out with a message
+when those are absent; a generated robot of 500 links (bench_urdf's) and one of 500 links with
+STL visuals and collisions (bench_models', 50 files of 2,000 facets). Aims: r2d2 from clean
+under 1 s, its no-op within the sample's no-op aim; a large real robot under 1.5 s from clean.
+A robot apply refuses is timed to its refusal (exit 2), and the line says so.
 
 Run: python3 bench/bench_apply.py [--rounds N] [--sizes N ...] [--parts sample,robots,sweep]
+                                  [--large NAME,...] [--robots-root DIR]
 """
 
 from __future__ import annotations
@@ -68,15 +74,17 @@ def run_timed(command: list[str], expect: int = 0, *, replay: bool = True) -> tu
     env = ENV if replay else {**ENV, "UNITYSCAFFOLD_NO_REPLAY": "1"}
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run(command, stdout=subprocess.DEVNULL, env=env, check=False)
+    # a refusal's errors are expected (the caller says which exit), so they are not shown
+    errors = subprocess.DEVNULL if expect else None
+    done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=errors, env=env, check=False)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     assert done.returncode == expect, (command, done.returncode)
     return wall, after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
 
 
-def timed_apply(project: Path, *, replay: bool = True) -> tuple[float, float]:
-    return timed("apply", "--quiet", str(project / "robot.yaml"), replay=replay)
+def timed_apply(project: Path, *, replay: bool = True, expect: int = 0) -> tuple[float, float]:
+    return timed("apply", "--quiet", str(project / "robot.yaml"), replay=replay, expect=expect)
 
 
 STANDARD_TYPES = [
@@ -148,6 +156,10 @@ def main() -> None:
         "--sizes", type=int, nargs="*", default=[100, 500, 1000, 2000, 4000], help="topics"
     )
     parser.add_argument("--parts", default="sample,robots,sweep")
+    parser.add_argument(
+        "--large", default="pr2,tiago,talos", help="the robot survey's robots to time (a,b,…)"
+    )
+    parser.add_argument("--robots-root", type=Path, help="the survey's checkouts")
     args = parser.parse_args()
     parts = args.parts.split(",")
     with tempfile.TemporaryDirectory() as work:
@@ -160,7 +172,7 @@ def main() -> None:
         if "sample" in parts:
             sample(args.rounds, Path(work))
         if "robots" in parts:
-            robots(args.rounds, Path(work))
+            robots(args.rounds, Path(work), args.large, args.robots_root)
         if args.sizes and "sweep" in parts:
             sweep(args.sizes)
         print(f"load average after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
@@ -198,47 +210,100 @@ VENDOR = Path(os.environ.get("UNITYSCAFFOLD_VENDOR", REPO.parent / "shared" / "v
 R2D2 = VENDOR / "ros-sharp" / "samples" / "gazebo-ros2-step1"
 
 
-def robots(rounds: int, work: Path) -> None:
+def robots(rounds: int, work: Path, large: str, root: Path | None) -> None:
     from bench_models import stl_robot  # 500 links with STL visuals and collisions
     from bench_urdf import robot  # the generated robot of bench_urdf.py
 
-    r2d2 = (R2D2 / "custom_r2d2.urdf").read_text(encoding="utf-8")
-    cases = {"r2d2": r2d2, "500 links": robot(500).decode(), "500 STL links": ""}
     print(f"robots, {rounds} rounds")
-    for label, urdf in cases.items():
-        project = work / "robots" / label.replace(" ", "_")
+    r2d2 = new_project(work / "robots" / "r2d2", (R2D2 / "custom_r2d2.urdf").read_text())
+    # its package beside the URDF, where ROS# looks for it
+    models = R2D2 / "Urdf/file_server2/urdf_tutorial"
+    shutil.copytree(models, r2d2 / "urdf_tutorial", ignore=_metas)
+    measure("r2d2", r2d2, rounds, work, "(aim < 1000 ms)")
+    for name in large.split(","):
+        real = survey_project(name, work / "robots", root)
+        if real is not None:
+            measure(name, real, rounds, work, "(aim < 1500 ms)")
+    measure("500 links", new_project(work / "robots" / "500", robot(500).decode()), rounds, work)
+    stl = new_project(work / "robots" / "500_stl", "")
+    urdf = stl_robot(stl / "stl", 500, 50, 2000).read_text(encoding="utf-8")
+    shutil.move(stl / "stl" / "desc", stl / "desc")
+    (stl / "robot.urdf").write_text(urdf, encoding="utf-8")
+    measure("500 STL links", stl, rounds, work)
+
+
+def new_project(project: Path, urdf: str) -> Path:
+    """A new ROS 2 project whose manifest imports ``robot.urdf``, written as ``urdf``."""
+    subprocess.run(
+        [sys.executable, "-m", "unityscaffold", "init", "--ros", "2", str(project)],
+        check=True,
+        stdout=subprocess.DEVNULL,
+        env=ENV,
+    )
+    (project / "robot.urdf").write_text(urdf, encoding="utf-8")
+    manifest = project / "robot.yaml"
+    text = manifest.read_text(encoding="utf-8")
+    manifest.write_text(text.replace("\nrobots:\n", "\nrobots:\n  - urdf: robot.urdf\n", 1))
+    return project
+
+
+def survey_project(name: str, work: Path, root: Path | None) -> Path | None:
+    """A project of the robot survey's robot ``name`` (bench/robots.yaml) as the survey builds
+    it, from the survey's checkouts; None, saying so, when they are not there."""
+    import robot_survey
+
+    checkouts, listed = robot_survey.load_list()
+    chosen = next((r for r in listed if r.name == name), None)
+    if chosen is None:
+        raise SystemExit(f"no robot {name!r} in {robot_survey.LIST}")
+    root = root or robot_survey.default_root()
+    absent = robot_survey.missing_checkouts(chosen, checkouts, root)
+    if absent:
+        print(f"{name}: left out, its checkouts are not in {root} ({', '.join(absent)});")
+        print("  python3 bench/robot_survey.py --clone-commands prints how to get them")
+        return None
+    template = work / "survey-init"
+    if not template.exists():
         subprocess.run(
-            [sys.executable, "-m", "unityscaffold", "init", "--ros", "2", str(project)],
+            [sys.executable, "-m", "unityscaffold", "init", "--ros", "2", str(template)],
             check=True,
             stdout=subprocess.DEVNULL,
             env=ENV,
         )
-        if label == "r2d2":  # its package beside the URDF, where ROS# looks for it
-            models = R2D2 / "Urdf/file_server2/urdf_tutorial"
-            shutil.copytree(models, project / "urdf_tutorial", ignore=_metas)
-        elif label == "500 STL links":
-            urdf = stl_robot(project / "stl", 500, 50, 2000).read_text(encoding="utf-8")
-            shutil.move(project / "stl" / "desc", project / "desc")
-        (project / "robot.urdf").write_text(urdf, encoding="utf-8")
-        manifest = project / "robot.yaml"
-        text = manifest.read_text(encoding="utf-8")
-        text = text.replace("\nrobots:\n", "\nrobots:\n  - urdf: robot.urdf\n", 1)
-        manifest.write_text(text, encoding="utf-8")
-        scene = project / "Assets/Scenes/Main.unity"
-        start = scene.read_bytes()
-        clean, noop, replayed = [], [], []
-        timed_apply(project)  # uncounted: compiles the bytecode and the templates
-        for _ in range(rounds):
-            scene.write_bytes(start)
-            (project / "robot.lock.json").unlink(missing_ok=True)
-            shutil.rmtree(project / "Assets/Urdf", ignore_errors=True)
-            clean.append(timed_apply(project))
+    return robot_survey.prepare(chosen, checkouts, root, template)
+
+
+def measure(label: str, project: Path, rounds: int, work: Path, aim: str = "") -> None:
+    """From clean (scene, lock and the robot's assets reset) and the no-op re-apply, planned and
+    replayed; a robot apply refuses, only to its refusal."""
+    scene = project / "Assets/Scenes/Main.unity"
+    start = scene.read_bytes()
+    # uncounted: compiles the bytecode and the templates, and tells whether apply imports it
+    expect = subprocess.run(
+        [sys.executable, "-m", "unityscaffold", "apply", "--quiet", str(project / "robot.yaml")],
+        capture_output=True,
+        env=ENV,
+        check=False,
+    ).returncode
+    clean: list[tuple[float, float]] = []
+    noop: list[tuple[float, float]] = []
+    replayed: list[tuple[float, float]] = []
+    for _ in range(rounds):
+        scene.write_bytes(start)
+        (project / "robot.lock.json").unlink(missing_ok=True)
+        shutil.rmtree(project / "Assets/Urdf", ignore_errors=True)
+        clean.append(timed_apply(project, expect=expect))
+        if expect == 0:
             shutil.rmtree(work / "cache" / "unityscaffold" / "noop", ignore_errors=True)
             noop.append(timed_apply(project))
             replayed.append(timed_apply(project))
-        print(_line(f"{label} from clean", clean, "(aim < 1000 ms for r2d2)"), flush=True)
-        print(_line(f"{label} no-op", noop, "(plans, writes the no-op record)"), flush=True)
-        print(_line(f"{label} replayed", replayed, "(the next no-op)"), flush=True)
+    if expect != 0:
+        note = f"(REFUSED, exit {expect}: the time to the refusal, nothing written)"
+        print(_line(f"{label} refused", clean, note), flush=True)
+        return
+    print(_line(f"{label} from clean", clean, aim), flush=True)
+    print(_line(f"{label} no-op", noop, "(plans, writes the no-op record)"), flush=True)
+    print(_line(f"{label} replayed", replayed, "(the next no-op)"), flush=True)
 
 
 def _metas(folder: str, names: list[str]) -> list[str]:

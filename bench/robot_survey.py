@@ -68,6 +68,8 @@ class Robot:
     urdf: str
     packages: dict[str, str]
     args: dict[str, str]
+    #: what ROS#'s editor importer does with it, the yardstick of the verdict
+    rossharp: str
 
     def checkouts(self) -> list[str]:
         """The checkouts the entry's files lie in, in the order the entry names them."""
@@ -81,6 +83,7 @@ class Verdict:
 
     name: str
     set: str
+    rossharp: str
     status: str = "imported"
     #: cause (the message without its names and numbers) -> first lines of its errors
     causes: dict[str, list[str]] = field(default_factory=dict)
@@ -102,6 +105,7 @@ def load_list(path: Path = LIST) -> tuple[dict[str, Checkout], list[Robot]]:
             r["urdf"],
             dict(r.get("packages", {})),
             {k: str(v) for k, v in r.get("args", {}).items()},
+            r["rossharp"],
         )
         for r in data["robots"]
     ]
@@ -198,6 +202,8 @@ def scaffold(env: dict[str, str], *args: str) -> tuple[int, str, float]:
 ERROR = re.compile(r"(?:^|: )error: (?P<message>.*)$")
 #: What varies between errors of one cause: quoted names, paths, numbers.
 VARYING = (
+    (re.compile(r"\$\((\w+) [^)]*\)"), r"$(\1 …)"),
+    (re.compile(r"\(listed: [^)]*\)"), "(listed: …)"),
     (re.compile(r"(?<![A-Za-z])'[^']*'|\"[^\"]*\"|`[^`]*`"), "…"),
     (re.compile(r"(?:[\w.+-]*/)+[\w.+-]+"), "…"),
     (re.compile(r"\b\d+(\.\d+)?\b"), "N"),
@@ -264,7 +270,7 @@ def changes(before: dict[str, str], after: dict[str, str]) -> list[str]:
 
 
 def survey(robot: Robot, project: Path, env: dict[str, str], absent: set[str]) -> Verdict:
-    verdict = Verdict(robot.name, robot.set)
+    verdict = Verdict(robot.name, robot.set, robot.rossharp)
     manifest_path = str(project / "robot.yaml")
     status, output, verdict.seconds["apply"] = scaffold(env, "apply", manifest_path)
     if crashed(status, output):
@@ -302,7 +308,8 @@ def run(
         for robot in robots:
             absent = missing_checkouts(robot, checkouts, root)
             if absent:
-                yield Verdict(robot.name, robot.set, "missing", detail=f"not in {root}: {absent}")
+                detail = f"not in {root}: {absent}"
+                yield Verdict(robot.name, robot.set, robot.rossharp, "missing", detail=detail)
                 continue
             shutil.rmtree(work / robot.name, ignore_errors=True)
             project = prepare(robot, checkouts, root, template)
@@ -321,6 +328,8 @@ def describe(verdict: Verdict) -> list[str]:
         lines.append(f"    {len(messages):>3} x {reason}")
         lines.extend(f"          {message}" for message in messages[:1])
     lines.extend(f"    {line}" for line in verdict.detail.splitlines()[-12:])
+    if verdict.status != "imported":
+        lines.append(f"    ROS#: {verdict.rossharp}")
     return lines
 
 
@@ -332,15 +341,20 @@ def summary(verdicts: list[Verdict]) -> list[str]:
         shown = ", ".join(f"{n} {status}" for status, n in sorted(counts.items()))
         lines.append(f"{name}: {shown} (of {len(chosen)})")
     causes = Counter(reason for v in verdicts for reason in v.causes)
-    lines.append("refusals by cause (robots):")
+    if causes:
+        lines.append("refusals by cause (robots):")
     lines.extend(f"  {n:>3}  {reason}" for reason, n in causes.most_common())
     return lines
 
 
+def default_root() -> Path:
+    """Where the checkouts are: ``$UNITYSCAFFOLD_ROBOTS``, else ``robots`` beside the clone."""
+    return Path(os.environ.get(ROOT_VARIABLE) or REPO.parent / "robots")
+
+
 def parse(argv: list[str] | None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    default_root = os.environ.get(ROOT_VARIABLE) or str(REPO.parent / "robots")
-    parser.add_argument("--root", type=Path, default=Path(default_root), help="the checkouts")
+    parser.add_argument("--root", type=Path, default=default_root(), help="the checkouts")
     parser.add_argument("--only", action="append", default=[], metavar="NAME")
     parser.add_argument("--set", choices=("popular", "more"))
     parser.add_argument("--json", action="store_true", help="the verdicts as JSON")
