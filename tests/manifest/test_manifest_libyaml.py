@@ -51,6 +51,7 @@ def test_real_manifests_take_the_libyaml_way_and_read_as_with_ruamel(
         "%YAML 1.1\n---\nros: yes\n",  # a directive changes how ruamel resolves
         "ros: !!str 1\n",
         "a: 1\n---\nb: 2\n",
+        "a: 1\n...\n...\n",  # libyaml reads one document, ruamel two
         "\ufeffros: 1\n",
         "ros: 1\t\n",
         "ros: 1\rb: 2\n",

@@ -6,7 +6,7 @@ twenty times faster; here those events become the very ruamel nodes ruamel's com
 build (tags resolved by ruamel's YAML 1.2 resolver, so ``yes`` stays text), and the caller
 converts them exactly as before.
 
-Only the plain subset takes this way: one document, no ``%`` directive, no explicit tag, no
+Only the plain subset takes this way: one document with no ``...`` end, no ``%`` directive, no explicit tag, no
 byte-order mark, no tab or line break other than LF and CRLF, no block scalar (``|``, ``>``),
 no empty value other than a mapping's, at most ``MAX_DEPTH`` levels. Anything else, and any
 text libyaml refuses, returns ``RUAMEL``: the caller composes it with ruamel itself, whose
@@ -86,8 +86,10 @@ class _Composer:
         if start.version or start.tags:
             raise _Unsupported
         root = self.document()
-        events.get_event()  # document end
-        if not isinstance(events.get_event(), yaml.StreamEndEvent):
+        end = events.get_event()
+        # after an explicit end ("..."), libyaml takes a second "..." as nothing, where ruamel
+        # sees another document: such streams are ruamel's to read
+        if end.explicit or not isinstance(events.get_event(), yaml.StreamEndEvent):
             raise _Unsupported  # several documents: ruamel says so
         return root
 
