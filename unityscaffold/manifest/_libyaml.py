@@ -6,11 +6,11 @@ twenty times faster; here those events become the very ruamel nodes ruamel's com
 build (tags resolved by ruamel's YAML 1.2 resolver, so ``yes`` stays text), and the caller
 converts them exactly as before.
 
-Only the plain subset takes this way: one document with no ``...`` end, no ``%`` directive, no explicit tag, no
-byte-order mark, no tab or line break other than LF and CRLF, no block scalar (``|``, ``>``),
-no empty value other than a mapping's, at most ``MAX_DEPTH`` levels. Anything else, and any
-text libyaml refuses, returns ``RUAMEL``: the caller composes it with ruamel itself, whose
-errors and warnings stay the ones users see.
+Only the plain subset takes this way: one document with no ``...`` end, no ``%`` directive,
+no explicit tag, no byte-order mark, no tab or line break other than LF and CRLF, no block
+scalar (``|``, ``>``), no empty value other than a mapping's, at most ``MAX_DEPTH`` levels.
+Anything else, and any text libyaml refuses, returns ``RUAMEL``: the caller composes it with
+ruamel itself, whose errors and warnings stay the ones users see.
 """
 
 from __future__ import annotations
