@@ -1,4 +1,5 @@
-"""The ``.meta`` files Unity 2022.3 writes for a model (``.dae``) and a texture (``.png``).
+"""The ``.meta`` files Unity 2022.3 writes for a model (``.dae``) and a texture (any format
+its TextureImporter reads: one importer, one set of settings, docs/unity-yaml.md).
 
 The settings are the ones Unity wrote for the r2d2 sample's COLLADA models and their textures
 after ROS#'s ``ColladaAssetPostProcessor`` had set its own (no animation, cameras or lights;
