@@ -28,13 +28,38 @@ def _project(tmp_path: Path, urdf: str) -> Path:
     return init_project(tmp_path, {"ros/bot.urdf": urdf, "robot.yaml": HEADER})
 
 
-def test_two_urdf_materials_named_apart_only_by_case_are_refused_and_nothing_is_written(
+def test_two_urdf_materials_named_apart_only_by_case_are_numbered_apart(tmp_path: Path) -> None:
+    """ROS# would make one file of them on Windows and macOS, two on Linux: the second in
+    ROS#'s order is numbered, as Unity numbers a copy (docs/unity-yaml.md)."""
+    project = _project(tmp_path, _urdf("Blue", "blue"))
+    run = apply(project)
+    assert run.code == 0, run
+    materials = project / "Assets/Urdf/bot/Materials"
+    assert {p.name for p in materials.glob("*.mat")} == {"Default.mat", "Blue.mat", "blue 1.mat"}
+
+
+def test_two_textures_named_apart_only_by_case_are_refused_and_nothing_is_written(
     tmp_path: Path,
 ) -> None:
-    project = _project(tmp_path, _urdf("Blue", "blue"))
+    material = '<material name="{0}"><texture filename="package://desc/{0}.png"/></material>'
+    urdf = _urdf("Skin", "skin").replace(
+        '<material name="Skin"><color rgba="0 0 0.8 1"/></material>', material.format("Skin")
+    )
+    urdf = urdf.replace(
+        '<material name="skin"><color rgba="0.8 0 0 1"/></material>', material.format("skin")
+    )
+    project = init_project(
+        tmp_path,
+        {
+            "ros/bot.urdf": urdf,
+            "robot.yaml": HEADER + "    packages: {desc: ros/desc}\n",
+            "ros/desc/Skin.png": "S",
+            "ros/desc/skin.png": "s",
+        },
+    )
     run = apply_refused(project)
-    assert "Assets/Urdf/bot/Materials/Blue.mat" in run.err, run.err
-    assert "Assets/Urdf/bot/Materials/blue.mat" in run.err, run.err
+    assert "Assets/Urdf/bot/desc/Skin.png" in run.err, run.err
+    assert "Assets/Urdf/bot/desc/skin.png" in run.err, run.err
     assert "differ only in letter case" in run.err, run.err
 
 
