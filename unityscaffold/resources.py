@@ -1,5 +1,5 @@
-"""The package's data files: the jinja2 templates, the manifest's JSON Schema, ROS#'s catalog,
-uGUI's fields.
+"""The package's data files: the jinja2 templates (and a few ``string.Template`` ones), the
+manifest's JSON Schema, ROS#'s catalog, uGUI's fields.
 
 They live inside the package (``unityscaffold/templates/``, ``unityscaffold/schema/``), so a
 source checkout, an editable install and a wheel all read them the same way: templates through
@@ -34,6 +34,7 @@ __all__ = [
     "schema_text",
     "template_environment",
     "template_folder",
+    "template_text",
     "ugui_fields_text",
 ]
 
@@ -110,6 +111,13 @@ def template_folder(folder: str) -> dict[str, bytes]:
             else:
                 found[prefix + child.name] = child.read_bytes()
     return {path: found[path] for path in sorted(found, key=lambda p: p.split("/"))}
+
+
+@cache
+def template_text(path: str) -> str:
+    """The text of ``templates/<path>``: a ``string.Template`` for text that must be written
+    without loading jinja (a robot's apply, whose start-up time counts)."""
+    return (files(_PACKAGE) / _TEMPLATES / path).read_text(encoding="utf-8")
 
 
 def schema_text() -> str:

@@ -5,12 +5,15 @@ every Standard property at its default except the colour, metallic and smoothnes
 and the albedo texture (``_MainTex``) when one is given. A texture is referred to as Unity
 refers to an imported texture's Texture2D, ``{fileID: 2800000, guid: <its .meta's>, type: 3}``
 (a ``.mat`` Unity 2022.3.0 saved, docs/unity-yaml.md). The text is laid out by the
-``unity_assets/StandardMaterial.mat.jinja`` template from the data below.
+``unity_assets/StandardMaterial.mat.template`` template from the data below (a
+``string.Template``: a robot's apply loads no jinja).
 """
 
 from __future__ import annotations
 
-from unityscaffold.resources import template_environment
+import string
+
+from unityscaffold.resources import template_text
 from unityscaffold.unity._emit import flow_text
 from unityscaffold.unity._scalars import format_float, format_string
 from unityscaffold.unity.values import AssetRef, InlineMap
@@ -52,6 +55,12 @@ _FLOATS = (
     ("_ZWrite", 1.0),
 )
 _NO_TEXTURE = "{fileID: 0}"
+# one entry of m_TexEnvs, and one of m_Floats or m_Colors
+_TEXTURE_ENTRY = string.Template(
+    "    - $property:\n        m_Texture: $texture\n"
+    "        m_Scale: {x: 1, y: 1}\n        m_Offset: {x: 0, y: 0}\n"
+)
+_ENTRY = string.Template("    - $property: $value\n")
 _BLACK = (0.0, 0.0, 0.0, 1.0)
 
 
@@ -70,13 +79,25 @@ def standard_material(
     if main_texture is not None:
         albedo = _flow(AssetRef(TEXTURE_FILE_ID, main_texture, _TYPE_IMPORTED))
     chosen = {"_Glossiness": smoothness, "_Metallic": metallic}
-    template = template_environment().get_template("unity_assets/StandardMaterial.mat.jinja")
-    return template.render(
+    textures = (
+        _TEXTURE_ENTRY.substitute(property=t, texture=albedo if t == "_MainTex" else _NO_TEXTURE)
+        for t in _TEXTURES
+    )
+    floats = (
+        _ENTRY.substitute(property=k, value=format_float(chosen[k] if v is None else v))
+        for k, v in _FLOATS
+    )
+    colours = (
+        _ENTRY.substitute(property=k, value=_colour(v))
+        for k, v in (("_Color", color), ("_EmissionColor", _BLACK))
+    )
+    document = string.Template(template_text("unity_assets/StandardMaterial.mat.template"))
+    return document.substitute(
         file_id=MATERIAL_FILE_ID,
         name=format_string(name, column=10),
-        textures=[(t, albedo if t == "_MainTex" else _NO_TEXTURE) for t in _TEXTURES],
-        floats=[(k, format_float(chosen[k] if v is None else v)) for k, v in _FLOATS],
-        colours=[("_Color", _colour(color)), ("_EmissionColor", _colour(_BLACK))],
+        textures="".join(textures),
+        floats="".join(floats),
+        colours="".join(colours),
     )
 
 
