@@ -15,11 +15,14 @@ A robot is
   (listed in ``<checkout>.missing`` beside the checkout, for a copy made without large files);
 - missing: its checkout is not in the folder (see --clone-commands).
 
+With --stand-ins, each file a ``.missing`` list names is replaced by a file of its kind from its
+folder (the line says which): the verdict is then the robot's with those models changed.
+
 The descriptions stay outside the repository (their licences vary): they are looked for in
 --root, $UNITYSCAFFOLD_ROBOTS, or `robots` beside the clone, one folder per checkout.
 
 Run: python3 bench/robot_survey.py [--root DIR] [--only NAME ...] [--set popular|more]
-                                   [--json] [--keep DIR] [--clone-commands]
+                                   [--json] [--keep DIR] [--stand-ins] [--clone-commands]
 """
 
 from __future__ import annotations
@@ -89,6 +92,8 @@ class Verdict:
     causes: dict[str, list[str]] = field(default_factory=dict)
     #: what went wrong beyond a refusal: a traceback, the files a second apply wrote, drift
     detail: str = ""
+    #: files absent from the checkout that --stand-ins replaced, as paths in the checkouts
+    stand_ins: list[str] = field(default_factory=list)
     seconds: dict[str, float] = field(default_factory=dict)
 
 
@@ -208,8 +213,6 @@ VARYING = (
     (re.compile(r"(?:[\w.+-]*/)+[\w.+-]+"), "…"),
     (re.compile(r"\b\d+(\.\d+)?\b"), "N"),
 )
-#: The error apply gives for a file a URDF names that is not there.
-NO_FILE = re.compile(r": no file (?P<path>\S+)$")
 #: The cause shown for files that are not in a checkout because it was made without them.
 ABSENT = "(file absent from this checkout, listed in <checkout>.missing)"
 
@@ -223,15 +226,14 @@ def cause(message: str) -> str:
 
 
 def group_errors(output: str, absent: set[str]) -> dict[str, list[str]]:
-    """Each error's first line, under its cause; a file missing only from the checkout (one the
-    upstream repository has, listed in ``absent``) under ``ABSENT``."""
+    """Each error's first line, under its cause; an error that names a file missing only from the
+    checkout (one the upstream repository has, listed in ``absent``) under ``ABSENT``."""
     causes: dict[str, list[str]] = {}
     for line in output.splitlines():
         found = ERROR.search(line)
         if found:
             message = found.group("message").strip()
-            no_file = NO_FILE.search(message)
-            missing = no_file is not None and no_file.group("path") in absent
+            missing = any(path in message for path in absent)
             causes.setdefault(ABSENT if missing else cause(message), []).append(message)
     if not causes:
         causes["(no error line)"] = [output.strip().splitlines()[-1] if output.strip() else ""]
@@ -269,6 +271,28 @@ def changes(before: dict[str, str], after: dict[str, str]) -> list[str]:
     return [name for name in names if before.get(name) != after.get(name)]
 
 
+def stand_in(project: Path, absent: set[str]) -> list[str]:
+    """Each absent file replaced by the first file of its kind (its extension, in any case) in
+    its folder, else in its checkout: the robot's tree stays, one model's content changes, and
+    the survey sees past a checkout made without its large files."""
+    placed = []
+    for path in sorted(absent):
+        target = Path(path)
+        checkout = project.joinpath(*target.relative_to(project).parts[:2])
+        for folder in (target.parent, checkout):
+            kind = sorted(
+                f
+                for f in folder.rglob("*")
+                if f.suffix.lower() == target.suffix.lower() and f.is_file()
+            )
+            if kind:
+                target.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(kind[0], target)
+                placed.append(target.relative_to(project / "ros").as_posix())
+                break
+    return placed
+
+
 def survey(robot: Robot, project: Path, env: dict[str, str], absent: set[str]) -> Verdict:
     verdict = Verdict(robot.name, robot.set, robot.rossharp)
     manifest_path = str(project / "robot.yaml")
@@ -295,7 +319,11 @@ def survey(robot: Robot, project: Path, env: dict[str, str], absent: set[str]) -
 
 
 def run(
-    robots: list[Robot], checkouts: dict[str, Checkout], root: Path, keep: Path | None
+    robots: list[Robot],
+    checkouts: dict[str, Checkout],
+    root: Path,
+    keep: Path | None,
+    stand_ins: bool = False,
 ) -> Iterator[Verdict]:
     work = Path(tempfile.mkdtemp(prefix="robot-survey-")) if keep is None else keep
     work.mkdir(parents=True, exist_ok=True)
@@ -306,14 +334,18 @@ def run(
         assert status == 0, output
     try:
         for robot in robots:
-            absent = missing_checkouts(robot, checkouts, root)
-            if absent:
-                detail = f"not in {root}: {absent}"
+            not_there = missing_checkouts(robot, checkouts, root)
+            if not_there:
+                detail = f"not in {root}: {not_there}"
                 yield Verdict(robot.name, robot.set, robot.rossharp, "missing", detail=detail)
                 continue
             shutil.rmtree(work / robot.name, ignore_errors=True)
             project = prepare(robot, checkouts, root, template)
-            yield survey(robot, project, env, absent_files(robot, root, project))
+            lacking = absent_files(robot, root, project)
+            placed = stand_in(project, lacking) if stand_ins else []
+            verdict = survey(robot, project, env, set() if stand_ins else lacking)
+            verdict.stand_ins = placed
+            yield verdict
     finally:
         if keep is None:
             shutil.rmtree(work, ignore_errors=True)
@@ -323,7 +355,9 @@ def describe(verdict: Verdict) -> list[str]:
     """The verdict as text: a line for the robot, one per cause of a refusal (with its count
     and first error), the first lines of what went wrong otherwise."""
     took = sum(verdict.seconds.values())
-    lines = [f"{verdict.name:<20} {verdict.set:<8} {verdict.status:<9} {took:6.2f} s"]
+    lines = [f"{verdict.name:<20} {verdict.set:<8} {verdict.status:<10} {took:6.2f} s"]
+    if verdict.stand_ins:
+        lines[0] += f"  ({len(verdict.stand_ins)} stand-in files: {', '.join(verdict.stand_ins)})"
     for reason, messages in verdict.causes.items():
         lines.append(f"    {len(messages):>3} x {reason}")
         lines.extend(f"          {message}" for message in messages[:1])
@@ -360,6 +394,11 @@ def parse(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--json", action="store_true", help="the verdicts as JSON")
     parser.add_argument("--keep", type=Path, help="make the projects here and keep them")
     parser.add_argument("--list", type=Path, default=LIST, help="the list of robots")
+    parser.add_argument(
+        "--stand-ins",
+        action="store_true",
+        help="replace the files <checkout>.missing lists by files of their kind",
+    )
     parser.add_argument("--clone-commands", action="store_true", help="print, run nothing")
     return parser.parse_args(argv)
 
@@ -380,7 +419,7 @@ def main(argv: list[str] | None = None) -> int:
         if (not options.only or r.name in options.only) and options.set in (None, r.set)
     ]
     verdicts = []
-    for verdict in run(chosen, checkouts, options.root, options.keep):
+    for verdict in run(chosen, checkouts, options.root, options.keep, options.stand_ins):
         verdicts.append(verdict)
         if not options.json:
             print("\n".join(describe(verdict)), flush=True)
