@@ -16,6 +16,7 @@ from robot_helpers import (
     FINGER,
     HEADER,
     apply,
+    apply_manifest,
     apply_refused,
     apply_writes_nothing,
     copy_meshes,
@@ -119,3 +120,20 @@ def test_every_texture_problem_is_reported_in_one_refused_apply(project: Path) -
         run.err
     ), run.err
     assert "bot.urdf:4:37: error: model 'package://desc/meshes/l_finger.dae' uses the" in run.err
+
+
+def test_an_object_names_the_textured_mat_on_the_apply_that_first_writes_it(
+    project: Path,
+) -> None:
+    """The textured .mat is written with its texture's GUID, apart from the colour ones, yet
+    an ``objects`` entry may name it as it names those (``PlannedRobot.asset_refs``)."""
+    screen = (
+        "objects:\n  - {path: bot/base/Screen, primitive: plane, components: [{type: "
+        "MeshRenderer, fields: {m_Materials: [Assets/Urdf/bot/Materials/Skin.mat]}}]}\n"
+    )
+    run = apply_manifest(project, MANIFEST + screen)
+    assert run.code == 0, run.err
+    guid = meta_guid(project / ROBOT / "Materials/Skin.mat.meta")
+    (material,) = field(project, "bot/base/Screen", "MeshRenderer", "m_Materials")
+    assert material == {"fileID": "2100000", "guid": guid, "type": "2"}
+    apply_writes_nothing(project)
