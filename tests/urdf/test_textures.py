@@ -173,3 +173,14 @@ def test_every_texture_problem_and_model_problem_of_a_robot_is_reported_in_one_r
     assert f"{urdf}:5:50: error: material 'm3': its texture 'package://desc/notes.txt'" in (message)
     assert "imports as no texture" in message
     assert f"{urdf}:6:19: error: model 'package://desc/m.dae' names the image" in message
+
+
+def test_a_missing_mesh_and_a_missing_texture_are_reported_in_one_run(tmp_path: Path) -> None:
+    visuals = (
+        '<visual><geometry><mesh filename="package://desc/gone.stl"/></geometry></visual>\n'
+        + TEXTURED
+    )
+    urdf = robot(tmp_path, visuals, {"t/other.png": "O"})
+    message = refusal(urdf)
+    assert f"{urdf}:2:19: error: mesh 'package://desc/gone.stl' names a file that" in message
+    assert f"{urdf}:3:49: error: texture 'package://desc/t/skin.jpg' names a file that" in message

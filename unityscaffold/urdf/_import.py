@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path, PurePosixPath
+from typing import TypeVar
 
 from unityscaffold.errors import DiagnosticSink, LocatedError
 from unityscaffold.unity.prefabinstance import ModelInstance
@@ -21,6 +22,8 @@ from unityscaffold.urdf.stl import stl_mesh_assets
 from unityscaffold.urdf.textures import material_textures
 
 __all__ = ["RobotImport", "import_robot"]
+
+_T = TypeVar("_T")
 
 
 @dataclass(frozen=True, slots=True)
@@ -61,18 +64,18 @@ def import_robot(
     written."""
     robot = read_urdf(urdf, packages=packages, xacro_args=xacro_args, xacro_env=xacro_env)
     refuse_unchecked_joints(robot)
-    meshes = resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
+    sink = DiagnosticSink()  # the meshes', the textures' and the models' problems, together
+    meshes = _collected(
+        sink, lambda: resolve_meshes(robot, urdf=urdf, packages=packages, project=project)
+    )
     materials = importer_materials(robot)
     files = {m.path: m.text() for m in materials if m.textured is None}
-    counts = _stl_files(meshes, files)
-    sink = DiagnosticSink()  # the materials' and the models' problems, reported together
     find = partial(resolve_file, urdf=urdf, packages=packages, project=project, kind="texture")
     textured = tuple(material_textures(materials, find, sink))
-    try:
-        plan = model_plan(robot, meshes, counts)
-    except LocatedError as error:
-        sink.diagnostics.extend(error.diagnostics)
+    counts = _stl_files(meshes or {}, files)
+    plan = None if meshes is None else _collected(sink, lambda: model_plan(robot, meshes, counts))
     sink.raise_if_errors()
+    assert meshes is not None and plan is not None  # else an error was raised
     objects = importer_tree(robot, plugin_newline=plugin_newline)
     # a texture both a model and a material name is one file
     copied = {asset.path: asset for asset in (*plan.assets, *textured)}
@@ -84,6 +87,15 @@ def import_robot(
         plan.instances,
         tuple(copied[path] for path in sorted(copied)),
     )
+
+
+def _collected(sink: DiagnosticSink, stage: Callable[[], _T]) -> _T | None:
+    """``stage()``, or None after adding its located errors to ``sink``."""
+    try:
+        return stage()
+    except LocatedError as error:
+        sink.diagnostics.extend(error.diagnostics)
+        return None
 
 
 def _stl_files(
