@@ -33,7 +33,7 @@ not checked), and textures Unity imports with another importer than its TextureI
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
@@ -51,7 +51,7 @@ from unityscaffold.unity.prefabinstance import (
 )
 from unityscaffold.unity.stlprefab import StlPrefab, prefab_meta, stl_prefab, stl_prefab_text
 from unityscaffold.urdf import transforms as t
-from unityscaffold.urdf._assets import PlannedAsset
+from unityscaffold.urdf._assets import GuidOf, PlannedAsset
 from unityscaffold.urdf._components import MaterialRef, material_name
 from unityscaffold.urdf._material_names import material_stems
 from unityscaffold.urdf._packages import ResolvedMesh
@@ -65,8 +65,6 @@ __all__ = ["ModelAsset", "ModelPlan", "model_plan"]
 _ROOT_GAMEOBJECT = model_file_id("GameObject", ROOT_PATH)
 _ROOT_TRANSFORM = model_file_id("Transform", ROOT_PATH)
 _TYPE_MODEL, _TYPE_NATIVE = 3, 2
-
-GuidOf = Callable[[str], str]
 
 
 @dataclass(frozen=True, slots=True)
