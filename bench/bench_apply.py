@@ -17,7 +17,7 @@ the cost per topic should stay flat as N grows.
 Robots: `robots:` entries applied into a scene from clean (scene, lock and the robot's assets
 reset) and the no-op re-apply, as whole processes: ROS#'s r2d2 (the tutorial's URDF and its two
 COLLADA models, read from $UNITYSCAFFOLD_VENDOR or ../shared/vendor); the largest real
-descriptions of the robot survey (--large; by default PR2: 92 links, 57 visuals and 61
+descriptions of the robot survey (--large; by default PR2: 88 links, 50 visuals and 50
 collisions, TIAGo: 89 links, TALOS: 68 links, each from its xacro, mostly COLLADA and STL
 models), read from the survey's checkouts (see robot_survey.py) and left out with a message
 when those are absent; a generated robot of 500 links (bench_urdf's) and one of 500 links with

@@ -71,6 +71,8 @@ class Robot:
     urdf: str
     packages: dict[str, str]
     args: dict[str, str]
+    #: values for the xacro's $(env) and $(optenv), the entry's `env`
+    env: dict[str, str]
     #: what ROS#'s editor importer does with it, the yardstick of the verdict
     rossharp: str
 
@@ -110,6 +112,7 @@ def load_list(path: Path = LIST) -> tuple[dict[str, Checkout], list[Robot]]:
             r["urdf"],
             dict(r.get("packages", {})),
             {k: str(v) for k, v in r.get("args", {}).items()},
+            {k: str(v) for k, v in r.get("env", {}).items()},
             r["rossharp"],
         )
         for r in data["robots"]
@@ -154,6 +157,8 @@ def manifest(robot: Robot) -> str:
         entry["packages"] = {k: os.path.normpath(f"ros/{v}") for k, v in robot.packages.items()}
     if robot.args:
         entry["args"] = robot.args
+    if robot.env:
+        entry["env"] = robot.env
     document = {"version": 1, "ros": 2, "project": ".", "scene": SCENE, "robots": [entry]}
     return yaml.safe_dump(document, sort_keys=False)
 
