@@ -21,7 +21,7 @@ folder (the line says which): the verdict is then the robot's with those models 
 The descriptions stay outside the repository (their licences vary): they are looked for in
 --root, $UNITYSCAFFOLD_ROBOTS, or `robots` beside the clone, one folder per checkout.
 
-Run: python3 bench/robot_survey.py [--root DIR] [--only NAME ...] [--set popular|more]
+Run: python3 bench/robot_survey.py [--root DIR] [--only NAME ...] [--set NAME]
                                    [--json] [--keep DIR] [--stand-ins] [--clone-commands]
 """
 
@@ -278,13 +278,13 @@ def changes(before: dict[str, str], after: dict[str, str]) -> list[str]:
 
 def stand_in(project: Path, absent: set[str]) -> list[str]:
     """Each absent file replaced by the first file of its kind (its extension, in any case) in
-    its folder, else in its checkout: the robot's tree stays, one model's content changes, and
-    the survey sees past a checkout made without its large files."""
+    its folder, else in its checkout, else in any checkout: the robot's tree stays, one model's
+    content changes, and the survey sees past a checkout made without its large files."""
     placed = []
     for path in sorted(absent):
         target = Path(path)
         checkout = project.joinpath(*target.relative_to(project).parts[:2])
-        for folder in (target.parent, checkout):
+        for folder in (target.parent, checkout, project / "ros"):
             kind = sorted(
                 f
                 for f in folder.rglob("*")
@@ -348,7 +348,8 @@ def run(
             project = prepare(robot, checkouts, root, template)
             lacking = absent_files(robot, root, project)
             placed = stand_in(project, lacking) if stand_ins else []
-            verdict = survey(robot, project, env, set() if stand_ins else lacking)
+            still = {path for path in lacking if not Path(path).exists()}
+            verdict = survey(robot, project, env, still)
             verdict.stand_ins = placed
             yield verdict
     finally:
@@ -395,7 +396,7 @@ def parse(argv: list[str] | None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--root", type=Path, default=default_root(), help="the checkouts")
     parser.add_argument("--only", action="append", default=[], metavar="NAME")
-    parser.add_argument("--set", choices=("popular", "more"))
+    parser.add_argument("--set", help="only the robots of this set (popular, more, extra)")
     parser.add_argument("--json", action="store_true", help="the verdicts as JSON")
     parser.add_argument("--keep", type=Path, help="make the projects here and keep them")
     parser.add_argument("--list", type=Path, default=LIST, help="the list of robots")
