@@ -108,7 +108,7 @@ def test_an_adopted_robot_follows_its_urdf_in_place_as_one_apply_imported(
         ),
         (
             ("  m_Name: Sphere\n", "  m_Name: Ball\n"),
-            "'bot/base/arm/Visuals/unnamed' has no child 'Sphere'",
+            "'bot/base/arm/Collisions/unnamed' has no child 'Sphere'",
         ),
     ],
 )

@@ -28,7 +28,13 @@ from unityscaffold.apply._renames import follow
 from unityscaffold.apply._rossharp import RosSharp
 from unityscaffold.apply._target import target_for
 from unityscaffold.apply.robots import PlannedRobot, place_robots, remove_kept
-from unityscaffold.errors import LocatedError, Severity, SourceLocation, located_at
+from unityscaffold.errors import (
+    InternalError,
+    LocatedError,
+    Severity,
+    SourceLocation,
+    located_at,
+)
 from unityscaffold.manifest.model import (
     Action,
     Component,
@@ -183,7 +189,7 @@ def plan_scenes(
         with located_at(locations[relative]):
             _edit_scene(ctx, plan, doc, lock, robots)
         if doc.revision:
-            _refuse_problems(doc)
+            _check_own_edits(doc, relative)
         plan.after = doc.text()
         plans.append(plan)
     return plans
@@ -193,3 +199,15 @@ def _refuse_problems(doc: SceneDocument) -> None:
     problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
     if problems:
         raise LocatedError(problems)
+
+
+def _check_own_edits(doc: SceneDocument, relative: str) -> None:
+    """The scene was whole before apply edited it, so a problem now is apply's own doing: a
+    bug to report, said by object, since the lines are those of a text never written."""
+    problems = [d for d in doc.validate() if d.severity is Severity.ERROR]
+    if problems:
+        raise InternalError(
+            f"internal error: apply's edits would leave {relative} inconsistent, which is a bug "
+            "in unityscaffold; nothing was written. Please report it with the manifest, the "
+            "files it names and this output:\n" + "\n".join(f"  {d.message}" for d in problems)
+        )

@@ -125,9 +125,11 @@ def _held_line(doc: Doc, key: str, file_id: int) -> list[str]:
 
 
 def _father(docs: Documents, obj: OwnedObject, tr: Doc) -> None:
-    if F.ref_value(tr, "m_Father") != obj.parent:
+    was = F.ref_value(tr, "m_Father")
+    if was != obj.parent:
         T.replace_field(tr, "m_Father", [f"  m_Father: {{fileID: {obj.parent}}}"])
         docs.touch(tr)
+        _leave(docs, was, obj.transform_id)
     if obj.parent:
         # an owned parent lists its owned children itself; another one (the robot's root
         # under the user's object) gets it appended
@@ -141,6 +143,20 @@ def _father(docs: Documents, obj: OwnedObject, tr: Doc) -> None:
     roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
     if obj.transform_id not in F.list_refs(roots, "m_Roots"):
         T.append_list_item(roots, "m_Roots", f"  - {{fileID: {obj.transform_id}}}")
+        docs.touch(roots)
+
+
+def _leave(docs: Documents, father: int | None, transform_id: int) -> None:
+    """A Transform moved to another parent (a link whose joint now names another parent)
+    leaves the list of the one it had: its old parent kept it among the children it did not
+    own, and the scene's roots list a root."""
+    if father:
+        old = docs.get(father)
+        if old is not None and T.remove_list_item(old, "m_Children", transform_id):
+            docs.touch(old)
+        return
+    roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
+    if T.remove_list_item(roots, "m_Roots", transform_id):
         docs.touch(roots)
 
 

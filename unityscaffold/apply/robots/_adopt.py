@@ -16,7 +16,7 @@ rewrite a robot the user built.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import replace
 from typing import NoReturn
 
@@ -244,12 +244,15 @@ _NEAR = 1e-6
 _POSE = ("m_LocalPosition", "m_LocalRotation")
 
 
-def keep_unity_rounding(doc: SceneDocument, objects: list[OwnedObject]) -> list[OwnedObject]:
+def keep_unity_rounding(
+    doc: SceneDocument, objects: list[OwnedObject], adopted: Collection[int]
+) -> list[OwnedObject]:
     """``objects`` without the pose fields whose scene values are within ``_NEAR`` of the
-    planned ones, so that those keep the bytes Unity wrote."""
+    planned ones, on the Transforms ``adopted`` (Unity wrote them), so that those keep the
+    bytes Unity wrote; apply's own are written as planned, as a fresh import would be."""
     kept = []
     for obj in objects:
-        found = doc.document(obj.transform_id)
+        found = doc.document(obj.transform_id) if obj.transform_id in adopted else None
         if found is None:
             kept.append(obj)
             continue

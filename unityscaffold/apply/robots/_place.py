@@ -18,7 +18,7 @@ documents whole and ``remove_owned`` removes them when the URDF drops the mesh. 
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from unityscaffold.apply._context import SceneContext
@@ -29,6 +29,7 @@ from unityscaffold.apply.robots._fields import refuse_owned_builtin_fields
 from unityscaffold.apply.robots._models import model_documents
 from unityscaffold.apply.robots._owned import owned_fields
 from unityscaffold.apply.robots._plan import PlannedRobot
+from unityscaffold.apply.robots._slots import Slots
 from unityscaffold.errors import LocatedError, UserError, located_at
 from unityscaffold.manifest.model import SceneObject
 from unityscaffold.unity import AssetRef, InlineMap, ObjectRef, SceneDocument
@@ -38,7 +39,6 @@ from unityscaffold.unity.owned import (
     OwnedComponent,
     OwnedDocument,
     OwnedObject,
-    owned_file_id,
 )
 from unityscaffold.unity.rotation import euler_to_quaternion
 from unityscaffold.unity.values import FieldValue
@@ -148,10 +148,12 @@ def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: Lo
     objects = writer.objects(robot.imported.objects, parent)
     before = lock.robot_ids(scene, robot.gameobject)
     editor.robot_fields.update(owned_fields(robot.gameobject, objects))
-    _remove(editor, robot.gameobject, set(before - writer.used))
-    taken = tuple(sorted((f"{k} {r}", i) for (k, r), i in writer.taken.items() if i in writer.used))
-    editor.plan.robots.append(LockRobot(scene, robot.gameobject, tuple(sorted(writer.used)), taken))
-    said = doc.sync_owned(keep_unity_rounding(doc, objects), writer.documents)
+    used = writer.slots.used
+    _remove(editor, robot.gameobject, set(before - used))
+    kept = writer.slots.recorded()
+    editor.plan.robots.append(LockRobot(scene, robot.gameobject, tuple(sorted(used)), kept))
+    adopted = set(writer.slots.taken.values())
+    said = doc.sync_owned(keep_unity_rounding(doc, objects, adopted), writer.documents)
     if any(line.startswith("create ") for line in said) and len(said) > 3:
         made = sum(line.startswith("create ") for line in said)
         editor.plan.edits.append(f"import robot {robot.gameobject} ({made} new objects)")
@@ -168,28 +170,26 @@ def _place(ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: Lo
 def _writer(
     ctx: SceneContext, editor: SceneEditor, robot: PlannedRobot, lock: LockFile, holder: int | None
 ) -> _Writer:
-    """The robot's writer, with the fileIDs of a robot imported by hand taken over: those an
-    earlier apply took (per the lock, where the scene still has them), or those of one at the
-    robot's path now (``_adopt``, which refuses whatever else is there)."""
-    doc = editor.doc
-    writer = _Writer(ctx, robot, lambda i: _class_of(doc, i))
-    earlier = lock.robot_adopted(editor.plan.relative, robot.gameobject)
-    writer.take({_slot(s): i for s, i in earlier.items() if doc.document(i) is not None})
-    root = writer.file_id(robot.imported.objects.key, "GameObject", 1)
-    found = adopt_existing(doc, robot, holder, root, ctx.rossharp_names, _slot_roles)
+    """The robot's writer, with the fileIDs an earlier apply gave it (``_slots``: derived, or
+    kept in the lock where the scene still has them), or those of a robot imported by hand at
+    the robot's path now (``_adopt``, which refuses whatever else is there)."""
+    doc, scene, root = editor.doc, editor.plan.relative, robot.imported.objects
+
+    def class_of(file_id: int) -> int | None:
+        return _class_of(doc, file_id)
+
+    before = lock.robot_ids(scene, robot.gameobject)
+    kept = lock.robot_adopted(scene, robot.gameobject)
+    writer = _Writer(ctx, robot, Slots.of(robot.gameobject, root, class_of, before, kept))
+    root_id = writer.slots.file_id(root.key, "GameObject", 1)
+    found = adopt_existing(doc, robot, holder, root_id, ctx.rossharp_names, _slot_roles)
     if not found:
         return writer
     count = sum(role == "GameObject" for _, role in found)
     editor.plan.edits.append(f"adopt robot {robot.gameobject}, imported by hand ({count} objects)")
-    writer = _Writer(ctx, robot, writer.class_of, adopting=True)
-    writer.take(found)
+    writer = _Writer(ctx, robot, Slots.of(robot.gameobject, root, class_of), adopting=True)
+    writer.slots.take(found)
     return writer
-
-
-def _slot(text: str) -> tuple[str, str]:
-    """A slot as the lock writes it (``"link[1]/visual[0] UrdfVisual#0"``)."""
-    key, _, role = text.partition(" ")
-    return key, role
 
 
 def _slot_roles(obj: ImportedObject) -> list[tuple[str, str]]:
@@ -207,25 +207,16 @@ class _Writer:
 
     ctx: SceneContext
     robot: PlannedRobot
-    class_of: Callable[[int], int | None]
-    used: set[int] = field(default_factory=set)
-    ids: dict[tuple[str, str], int] = field(default_factory=dict)
+    slots: Slots
     documents: list[OwnedDocument] = field(default_factory=list)
     adopting: bool = False  # this run takes over a robot imported by hand
-    taken: dict[tuple[str, str], int] = field(default_factory=dict)
 
-    def take(self, slots: Mapping[tuple[str, str], int]) -> None:
-        """Slots whose fileIDs come from a robot imported by hand (see ``_adopt``)."""
-        self.taken.update(slots)
-        self.ids.update(slots)
-        self.used.update(slots.values())
+    @property
+    def ids(self) -> dict[tuple[str, str], int]:
+        return self.slots.ids
 
     def file_id(self, key: str, role: str, class_id: int) -> int:
-        slot = (key, role)
-        if slot not in self.ids:
-            parts = ("robot", self.robot.gameobject, key, role)
-            self.ids[slot] = owned_file_id(parts, class_id, self.class_of, self.used)
-        return self.ids[slot]
+        return self.slots.file_id(key, role, class_id)
 
     def objects(self, root: ImportedObject, parent: int) -> list[OwnedObject]:
         """Every object, parents first; every fileID is picked before any field refers to one."""
@@ -350,12 +341,19 @@ def _cylinder_body() -> str:
 
 
 def _roles(components: Sequence[ImportedComponent]) -> Iterator[tuple[ImportedComponent, str]]:
-    """Each component with its role on its object: ``UrdfPlugin#2`` is the third UrdfPlugin."""
+    """Each component with its role on its object: ``UrdfPlugin#2`` is the third UrdfPlugin.
+    A joint's components (its UrdfJoint script and what follows it) are the joint type's:
+    ``HingeJoint#0 of UrdfJointRevolute``. Another type makes new ones, as ROS#'s
+    ``UrdfJoint.ChangeJointType`` destroys the old and adds the new, so that nothing the old
+    type set (a revolute joint's limits) stays on a continuous joint's HingeJoint."""
     seen: dict[str, int] = {}
+    joint = ""
     for component in components:
+        if component.name.startswith("UrdfJoint"):
+            joint = f" of {component.name}"
         n = seen.get(component.name, 0)
         seen[component.name] = n + 1
-        yield component, f"{component.name}#{n}"
+        yield component, f"{component.name}#{n}{joint}"
 
 
 def _class_id(component: ImportedComponent) -> int:
