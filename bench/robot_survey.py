@@ -11,6 +11,8 @@ A robot is
   cause (the message with quoted names and numbers left out);
 - crashed: an exit status other than 0 and 2, or a traceback (a bug to report);
 - unstable: imported, but the second apply wrote files or `--check` found drift (a bug too);
+- unportable: imported, but what apply wrote holds the project's absolute path, so a clone
+  elsewhere sees drift (a bug too);
 - incomplete: refused only for files its checkout lacks but the upstream repository has
   (listed in ``<checkout>.missing`` beside the checkout, for a copy made without large files);
 - missing: its checkout is not in the folder (see --clone-commands).
@@ -320,7 +322,27 @@ def survey(robot: Robot, project: Path, env: dict[str, str], absent: set[str]) -
     if status != 0:
         verdict.status = "crashed" if crashed(status, output) else "unstable"
         verdict.detail = f"apply --check after apply: exit {status}\n{output.strip()}"
+        return verdict
+    bound = machine_bound(project)
+    if bound:
+        verdict.status = "unportable"
+        verdict.detail = "this machine's path of the project is written in:\n" + "\n".join(bound)
     return verdict
+
+
+def machine_bound(project: Path) -> list[str]:
+    """The files apply wrote that hold the project's absolute path: a clone elsewhere would see
+    them as drift, so output must not depend on where the project lies."""
+    where = str(project).encode()
+    found = []
+    for path in sorted(project.rglob("*")):
+        relative = path.relative_to(project).as_posix()
+        data = path.read_bytes() if path.is_file() and not relative.startswith("ros/") else b""
+        at = data.find(where)
+        if at >= 0:
+            line = data[max(0, at - 60) : at + len(where) + 60].decode(errors="replace")
+            found.append(f"{relative}: …{line}…")
+    return found
 
 
 def run(
@@ -433,7 +455,7 @@ def main(argv: list[str] | None = None) -> int:
         print(json.dumps([asdict(v) for v in verdicts], indent=2))
     else:
         print("\n".join(summary(verdicts)))
-    return 1 if any(v.status in ("crashed", "unstable") for v in verdicts) else 0
+    return 1 if any(v.status in ("crashed", "unstable", "unportable") for v in verdicts) else 0
 
 
 if __name__ == "__main__":
