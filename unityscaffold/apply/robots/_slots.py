@@ -103,7 +103,7 @@ class Slots:
         if kept is not None and kept not in self.used and self.class_of(kept) == class_id:
             return self._keep((key, role), kept)
         derived = self._first(("robot", self.robot, identity, role), class_id)
-        if derived not in self.before and key != identity:
+        if self.before and derived not in self.before and key != identity:
             # a robot of the earlier scheme, whose fileIDs derived from the key itself
             earlier = self._first(("robot", self.robot, key, former), class_id)
             if earlier in self.before and earlier not in self.kept_ids:
