@@ -101,10 +101,10 @@ def test_a_mesh_the_urdf_drops_leaves_no_instance_behind_and_comes_back(project:
 def test_a_model_the_import_cannot_make_as_checked_is_refused_and_nothing_written(
     project: Path,
 ) -> None:
-    (project / "ros/desc/meshes/arm.obj").write_text("o arm\n")
+    (project / "ros/desc/meshes/arm.fbx").write_text("; FBX 7.4.0 project file\n")
     urdf = MESH_URDF.replace(
-        'meshes/l_finger.dae"/></geometry></visual>', 'meshes/arm.obj"/></geometry></visual>'
+        'meshes/l_finger.dae"/></geometry></visual>', 'meshes/arm.fbx"/></geometry></visual>'
     )
     (project / "ros/bot.urdf").write_text(urdf)
     run = apply_refused(project)
-    assert "bot.urdf:7:" in run.err and "models are not supported" in run.err
+    assert "bot.urdf:7:" in run.err and "no Unity-written scene" in run.err

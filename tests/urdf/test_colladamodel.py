@@ -20,9 +20,9 @@ from pathlib import Path
 import pytest
 
 from unityscaffold.unity.modelids import model_file_id
+from unityscaffold.urdf._creation import saved_rotation
 from unityscaffold.urdf.collada import read_collada
 from unityscaffold.urdf.colladamodel import drawn_nodes, imported_root_pose
-from unityscaffold.urdf.models import _saved_rotation
 
 HALF = 0.7071067690849304  # float32 of √½, as the scenes print it: 0.7071068
 
@@ -51,7 +51,7 @@ def empty(name: str, inner: str = "") -> str:
 
 def pose(path: Path) -> tuple[tuple[float, float, float], tuple[float, float, float, float]]:
     position, rotation = imported_root_pose(read_collada(path))
-    return position, _saved_rotation(rotation)
+    return position, saved_rotation(rotation)
 
 
 def test_the_ur3_base_s_renderer_has_the_file_id_unity_saved(tmp_path: Path) -> None:

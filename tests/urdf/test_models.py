@@ -295,10 +295,24 @@ def test_two_mesh_files_whose_names_differ_only_by_case_are_refused_at_the_secon
     assert "hint: rename one of the two mesh files" in message
 
 
-@pytest.mark.parametrize("suffix", [".obj", ".fbx"])
-def test_other_model_formats_are_refused_at_the_mesh(tmp_path: Path, suffix: str) -> None:
+@pytest.mark.parametrize(
+    ("suffix", "reason"),
+    [
+        # ROS# instantiates Unity's import, whose root pose no Unity-written scene here shows
+        (".fbx", "ROS# instantiates the model Unity imports from a .fbx file, whose root pose"),
+        (".FBX", "ROS# instantiates the model Unity imports from a .fbx file, whose root pose"),
+        # Unity imports neither without a package: ROS#'s FindUrdfAsset finds nothing
+        (".gltf", "Unity 2022.3 imports .gltf files only with a package (glTFast, UnityGLTF)"),
+        (".glb", "Unity 2022.3 imports .glb files only with a package (glTFast, UnityGLTF)"),
+        (".ply", "Unity 2022.3 imports no model from a .ply file by itself"),
+        ("", "Unity 2022.3 imports no model from a file without extension by itself"),
+    ],
+)
+def test_model_formats_ros_sharp_cannot_import_as_checked_are_refused_at_the_mesh(
+    tmp_path: Path, suffix: str, reason: str
+) -> None:
     (tmp_path / "desc").mkdir()
-    (tmp_path / "desc" / f"arm{suffix}").write_text("o arm\n", encoding="utf-8")
+    (tmp_path / "desc" / f"arm{suffix}").write_text("arm\n", encoding="utf-8")
     urdf = tmp_path / "r.urdf"
     urdf.write_text(
         f'<robot name="r"><link name="a"><visual><geometry>\n  <mesh filename='
@@ -306,8 +320,25 @@ def test_other_model_formats_are_refused_at_the_mesh(tmp_path: Path, suffix: str
         encoding="utf-8",
     )
     message = refusal(urdf, tmp_path)
-    assert message.startswith(f"{urdf}:2:3: error: mesh 'package://desc/arm{suffix}': {suffix}")
-    assert "hint: convert the mesh to STL or COLLADA" in message
+    assert message.startswith(f"{urdf}:2:3: error: mesh 'package://desc/arm{suffix}': {reason}")
+    assert "hint: convert the mesh to STL or COLLADA (.dae)" in message
+
+
+def test_every_refused_mesh_of_a_robot_is_reported_in_one_run(tmp_path: Path) -> None:
+    (tmp_path / "desc").mkdir()
+    for name in ("a.fbx", "b.glb"):
+        (tmp_path / "desc" / name).write_text("x\n", encoding="utf-8")
+    urdf = tmp_path / "r.urdf"
+    urdf.write_text(
+        '<robot name="r"><link name="a">\n'
+        '<visual><geometry><mesh filename="package://desc/a.fbx"/></geometry></visual>\n'
+        '<visual><geometry><mesh filename="package://desc/b.glb"/></geometry></visual>\n'
+        "</link></robot>",
+        encoding="utf-8",
+    )
+    message = refusal(urdf, tmp_path)
+    assert f"{urdf}:2:19: error: mesh 'package://desc/a.fbx'" in message
+    assert f"{urdf}:3:19: error: mesh 'package://desc/b.glb'" in message
 
 
 def collada(nodes: str, *, up: str = "Y_UP", images: str = "", geometries: str = "") -> str:

@@ -7,6 +7,13 @@ the global scale from the file's ``<unit meter>``), so Unity imports the copied 
 settings ROS#'s importer would have left and does not rewrite the ``.meta``. Only the GUID and,
 for a model, the global scale change from file to file (``tests/unity/test_importers.py``
 compares with Unity's files). The text is laid out by the ``unity_meta/`` templates.
+
+A model ROS#'s post-processor leaves alone (any but a ``.dae``: it returns at once for the
+rest) keeps Unity's defaults for the four settings it changes: ``globalScale: 1``,
+``importCameras: 1``, ``importLights: 1``, ``animationType: 2`` (Generic), as in the
+``.obj.meta`` Unity 2021.3 wrote for a default-imported model in github.com/Field-Robotics-Japan/
+UnitySensors (``Packages/UnitySensors/Runtime/RawData/LivoxModels/mid-360.obj.meta``); the rest
+is the 2022.3 layout above (``default_model_meta``).
 """
 
 from __future__ import annotations
@@ -14,16 +21,34 @@ from __future__ import annotations
 from unityscaffold.resources import template_environment
 from unityscaffold.unity._scalars import format_float
 
-__all__ = ["model_meta", "texture_meta"]
+__all__ = ["default_model_meta", "model_meta", "texture_meta"]
 
 # The platforms a default texture's importer lists settings for, in Unity's order.
 _TEXTURE_BUILD_TARGETS = ("DefaultTexturePlatform", "Standalone", "Windows Store Apps")
 
 
 def model_meta(guid: str, global_scale: float = 1.0) -> str:
-    """A model's ``.meta`` (ModelImporter); ``global_scale`` is ROS#'s from the file's unit."""
+    """A COLLADA model's ``.meta`` (ModelImporter) as ROS#'s post-processor leaves it: no
+    animation, cameras or lights; ``global_scale`` from the file's unit."""
+    return _model_meta(guid, global_scale, cameras_and_lights=0, animation_type=0)
+
+
+def default_model_meta(guid: str) -> str:
+    """The ``.meta`` of a model Unity imports with its defaults (an ``.obj``)."""
+    return _model_meta(guid, 1.0, cameras_and_lights=1, animation_type=2)
+
+
+def _model_meta(
+    guid: str, global_scale: float, *, cameras_and_lights: int, animation_type: int
+) -> str:
     template = template_environment().get_template("unity_meta/ModelImporter.meta.jinja")
-    return template.render(guid=guid, global_scale=format_float(global_scale))
+    return template.render(
+        guid=guid,
+        global_scale=format_float(global_scale),
+        import_cameras=cameras_and_lights,
+        import_lights=cameras_and_lights,
+        animation_type=animation_type,
+    )
 
 
 def texture_meta(guid: str) -> str:

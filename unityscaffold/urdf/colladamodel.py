@@ -34,7 +34,14 @@ from unityscaffold.unity.modelids import ROOT_PATH, model_file_id
 from unityscaffold.urdf import transforms as t
 from unityscaffold.urdf.collada import ColladaFacts, ColladaNode, Matrix
 
-__all__ = ["DrawnNode", "drawn_nodes", "imported_root_pose", "rotate", "turn"]
+__all__ = [
+    "DrawnNode",
+    "drawn_nodes",
+    "imported_root_pose",
+    "rotate",
+    "turn",
+    "unchecked_objects",
+]
 
 Vector3 = tuple[float, float, float]
 
@@ -168,3 +175,25 @@ def rotate(q: t.Quaternion, v: Vector3) -> Vector3:
     """``v`` turned by ``q``."""
     x, y, z, _ = turn(turn(q, (v[0], v[1], v[2], 0.0)), (-q[0], -q[1], -q[2], q[3]))
     return (x, y, z)
+
+
+def unchecked_objects(drawn: tuple[DrawnNode, ...]) -> str | None:
+    """Why the objects of a model's drawn nodes do not follow from a rule seen in Unity's
+    files, if they do not: how the FBX SDK splits a node of several geometries into objects,
+    and what it names a node with neither name nor id, no Unity-written file here shows."""
+    for node in drawn:
+        if node.node.geometries > 1:
+            return (
+                f"its node {_shown(node.node)} draws {node.node.geometries} geometries, and "
+                "which objects Unity makes of them is not checked against a Unity-written file"
+            )
+        if "//" in node.path.removeprefix("//") or node.path.endswith("/"):
+            return (
+                "a node without name or id leads to its node "
+                f"{_shown(node.node)}, and what Unity names such a node is not checked"
+            )
+    return None
+
+
+def _shown(node: ColladaNode) -> str:
+    return f"{node.name or node.id!r} (line {node.location.line})"

@@ -10,7 +10,12 @@ mesh (concave) and removes the MeshRenderer and the MeshFilter. A scene records 
   runs that post-processor over these files;
 - for a COLLADA file, the model Unity imports from the copied ``.dae`` (with the ``.meta`` of
   ``unity.importers``, and the textures its images name, ``urdf.textures``), whose objects
-  have the fileIDs of ``unity.modelids``.
+  have the fileIDs of ``unity.modelids``;
+- for a Wavefront OBJ file, the model Unity imports from the copied ``.obj`` with its default
+  settings, its root where Unity leaves it (``urdf.objmodel``).
+
+``_FORMATS`` maps each file suffix to its format's builder; any other suffix is a located
+error with the reason ROS# and Unity give it (``urdf._unimported``).
 
 A visual's ``<material>`` is put on every renderer of the instance, as ROS#'s
 ``UrdfMaterial.SetMaterial`` does by setting ``sharedMaterial``: Unity records that as a change
@@ -24,16 +29,17 @@ its inner objects have the fileIDs of the model's node tree (``urdf.colladamodel
 what rests on Unity-written files and what is inferred). A collision on a model adds a
 MeshCollider to each node that draws, and a ``<material>`` goes on each node's renderer.
 
-The rest is a located error saying why: other formats (``.obj``, ``.fbx``: Unity's own import,
-no saved scene to check), a collision or ``<material>`` on a model with a node of several
-geometries or a drawn node below one without name or id (which objects Unity makes of them is
-not checked), and textures Unity imports with another importer than its TextureImporter
+The rest is a located error saying why: other formats (``.fbx``: a root pose no saved scene
+shows; ``.gltf``, ``.glb``: no importer without a package ROS# does not use), a collision or
+``<material>`` on an OBJ model or on a COLLADA model with a node of several geometries or a
+drawn node below one without name or id (which objects Unity makes of them is not checked),
+and textures Unity imports with another importer than its TextureImporter
 (``urdf.textures``). A textured ``<material>`` is one more ``.mat`` (``urdf.materials``).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
@@ -53,11 +59,19 @@ from unityscaffold.unity.stlprefab import StlPrefab, prefab_meta, stl_prefab, st
 from unityscaffold.urdf import transforms as t
 from unityscaffold.urdf._assets import GuidOf, PlannedAsset
 from unityscaffold.urdf._components import MaterialRef, material_name
+from unityscaffold.urdf._creation import creation_turns, local_position, saved_rotation
 from unityscaffold.urdf._material_names import material_stems
 from unityscaffold.urdf._packages import ResolvedMesh
-from unityscaffold.urdf.collada import ColladaFacts, ColladaNode, read_collada
-from unityscaffold.urdf.colladamodel import DrawnNode, drawn_nodes, imported_root_pose, rotate, turn
-from unityscaffold.urdf.model import Material, Mesh, Robot, Vector3, Visual
+from unityscaffold.urdf._unimported import refusal
+from unityscaffold.urdf.collada import ColladaFacts, read_collada
+from unityscaffold.urdf.colladamodel import (
+    DrawnNode,
+    drawn_nodes,
+    imported_root_pose,
+    unchecked_objects,
+)
+from unityscaffold.urdf.model import Material, Mesh, Robot, Visual
+from unityscaffold.urdf.objmodel import UNCHECKED_OBJECTS, CopiedModel, obj_instance
 from unityscaffold.urdf.textures import model_textures
 
 __all__ = ["ModelAsset", "ModelPlan", "model_plan"]
@@ -65,6 +79,8 @@ __all__ = ["ModelAsset", "ModelPlan", "model_plan"]
 _ROOT_GAMEOBJECT = model_file_id("GameObject", ROOT_PATH)
 _ROOT_TRANSFORM = model_file_id("Transform", ROOT_PATH)
 _TYPE_MODEL, _TYPE_NATIVE = 3, 2
+_ONE_PER_NODE = "export the model with one geometry per node, each node named"
+_CONVERT = "convert the mesh to STL or COLLADA (.dae)"
 
 
 @dataclass(frozen=True, slots=True)
@@ -113,7 +129,7 @@ def model_plan(
     geometry that cannot be made as checked is one located error."""
     sink = DiagnosticSink()
     builder = _Builder(sink, stl_meshes, material_stems(robot))
-    turns = _creation_turns(robot)
+    turns = creation_turns(robot)
     instances: dict[str, ModelInstance] = {}
     for key, link, mesh, visual in _mesh_parts(robot):
         resolved = meshes[mesh.filename]
@@ -135,27 +151,6 @@ def _mesh_parts(robot: Robot) -> Iterator[tuple[str, str, Mesh, Visual | None]]:
         for j, collision in enumerate(link.collisions):
             if isinstance(collision.geometry, Mesh):
                 yield f"link[{i}]/collision[{j}]/shape", link.name, collision.geometry, None
-
-
-def _creation_turns(robot: Robot) -> dict[str, t.Quaternion]:
-    """How each link's geometries' parents are turned in the world when ROS# makes them: as
-    the link's parent link is, since ROS# poses a link (its joint's origin) only after making
-    its visuals and collisions, and its children after that (``UrdfLinkExtensions.Create``),
-    with the robot's root at the origin unturned."""
-    turns: dict[str, t.Quaternion] = {}
-    # (a link, how its parent is turned in the world, its own turn in its parent)
-    stack: list[tuple[str, t.Quaternion, t.Quaternion]] = [
-        (robot.root.name, t.IDENTITY, t.IDENTITY)
-    ]
-    while stack:
-        name, above, own = stack.pop()
-        if name in turns:
-            continue
-        turns[name] = above
-        posed = turn(above, own)
-        for joint in robot.child_joints(name):
-            stack.append((joint.child, posed, t.origin_rotation(joint.origin)))
-    return {link.name: turns.get(link.name, t.IDENTITY) for link in robot.links}
 
 
 class _Builder:
@@ -192,26 +187,40 @@ class _Builder:
         self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, *, collision: bool
     ) -> ModelInstance | None:
         suffix = resolved.relative.suffix.lower()
-        if suffix == ".stl":
-            stem = PurePosixPath(resolved.package) / resolved.relative.with_suffix("")
-            return (
-                self._stl(resolved, collision=collision)
-                if self._claim(f"{stem}.prefab", resolved, mesh)
-                else None
-            )
-        if suffix == ".dae":
-            path = PurePosixPath(resolved.package) / resolved.relative
-            if not self._claim(str(path), resolved, mesh):
-                return None
-            return self._collada(mesh, resolved, turned, collision=collision)
-        self.sink.error(
-            mesh.location,
-            f"mesh {mesh.filename!r}: {suffix or 'a file without extension'} models are not "
-            "supported: Unity imports them itself, and no Unity-written scene here shows "
-            "the fileIDs and root rotation it gives them",
-            hint="convert the mesh to STL or COLLADA (.dae, Y up)",
-        )
+        make = _FORMATS.get(suffix)
+        if make is not None:
+            return make(self, mesh, resolved, turned, collision)
+        reason, hint = refusal(suffix)
+        self.sink.error(mesh.location, f"mesh {mesh.filename!r}: {reason}", hint=hint)
         return None
+
+    def _stl(
+        self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, collision: bool
+    ) -> ModelInstance | None:
+        stem = PurePosixPath(resolved.package) / resolved.relative.with_suffix("")
+        if not self._claim(f"{stem}.prefab", resolved, mesh):
+            return None
+        return self._stl_instance(resolved, collision=collision)
+
+    def _collada(
+        self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, collision: bool
+    ) -> ModelInstance | None:
+        path = PurePosixPath(resolved.package) / resolved.relative
+        if not self._claim(str(path), resolved, mesh):
+            return None
+        return self._collada_instance(mesh, resolved, turned, collision=collision)
+
+    def _obj(
+        self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, collision: bool
+    ) -> ModelInstance | None:
+        path = str(PurePosixPath(resolved.package) / resolved.relative)
+        if not self._claim(path, resolved, mesh):
+            return None
+        if collision:
+            self._unchecked(mesh, mesh.location, "collision", UNCHECKED_OBJECTS, _CONVERT)
+            return None
+        self.assets.setdefault(path, CopiedModel(path, resolved.path))
+        return obj_instance(path, resolved)
 
     def _claim(self, path: str, resolved: ResolvedMesh, mesh: Mesh) -> bool:
         """Whether ``path`` is this mesh file's alone, ignoring case: Windows and macOS, where
@@ -237,6 +246,9 @@ class _Builder:
         ROS#'s ``UrdfMaterial.SetMaterial`` sets ``sharedMaterial`` on each: a renderer's
         first slot (``Renderer.sharedMaterial`` is its first material)."""
         made = self.assets[instance.source]  # an STL's prefab or the model, with its instance
+        if isinstance(made, CopiedModel):
+            self._unchecked(mesh, material.location, "<material>", UNCHECKED_OBJECTS, _CONVERT)
+            return None
         prefab = made.prefab if isinstance(made, ModelAsset) else None
         if prefab is not None:
             renderers = tuple(part.renderer for part in prefab.parts)
@@ -250,7 +262,7 @@ class _Builder:
         mat = AssetObject(ref.path, MATERIAL_FILE_ID, _TYPE_NATIVE)
         return instance.with_changes(material_modifications(renderers, mat))
 
-    def _stl(self, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance:
+    def _stl_instance(self, resolved: ResolvedMesh, *, collision: bool) -> ModelInstance:
         folder = PurePosixPath(resolved.package) / resolved.relative.parent
         stem = resolved.relative.stem
         count = self.stl_meshes[resolved]
@@ -270,7 +282,7 @@ class _Builder:
         )
         return ModelInstance(path, _TYPE_MODEL, prefab.transform, changes, removed, added)
 
-    def _collada(
+    def _collada_instance(
         self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, *, collision: bool
     ) -> ModelInstance | None:
         facts = self._facts(resolved.path)
@@ -282,8 +294,8 @@ class _Builder:
             _ROOT_TRANSFORM,
             _ROOT_GAMEOBJECT,
             resolved.relative.stem,
-            _local_position(position, turned),
-            _saved_rotation(rotation),
+            local_position(position, turned),
+            saved_rotation(rotation),
         )
         if not collision:
             return ModelInstance(path, _TYPE_MODEL, _ROOT_TRANSFORM, changes)
@@ -310,61 +322,36 @@ class _Builder:
         """The model's drawn nodes, when each one's objects follow from a checked rule; else
         None after saying why (once per model and use)."""
         drawn = drawn_nodes(facts)
-        problem = _unchecked(drawn)
+        problem = unchecked_objects(drawn)
         if problem is None:
             return drawn
-        key = (mesh.filename, use)
-        if key not in self.reported:
-            self.reported.add(key)
-            self.sink.error(
-                where,
-                f"model {mesh.filename!r} cannot take a {use} as ROS# makes it: {problem}",
-                hint="export the model with one geometry per node, each node named",
-            )
+        self._unchecked(mesh, where, use, problem)
         return None
+
+    def _unchecked(
+        self, mesh: Mesh, where: SourceLocation, use: str, problem: str, hint: str = _ONE_PER_NODE
+    ) -> None:
+        """Say, once per model and use, why the model cannot take ``use``."""
+        key = (mesh.filename, use)
+        if key in self.reported:
+            return
+        self.reported.add(key)
+        self.sink.error(
+            where,
+            f"model {mesh.filename!r} cannot take a {use} as ROS# makes it: {problem}",
+            hint=hint,
+        )
 
     def _textures(self, mesh: Mesh, resolved: ResolvedMesh, facts: ColladaFacts) -> None:
         for texture in model_textures(mesh, resolved, facts.images, self.sink):
             self.assets.setdefault(texture.path, texture)
 
 
-def _unchecked(drawn: tuple[DrawnNode, ...]) -> str | None:
-    """Why the objects of a model's drawn nodes do not follow from a rule seen in Unity's
-    files, if they do not: how the FBX SDK splits a node of several geometries into objects,
-    and what it names a node with neither name nor id, no Unity-written file here shows."""
-    for node in drawn:
-        if node.node.geometries > 1:
-            return (
-                f"its node {_shown(node.node)} draws {node.node.geometries} geometries, and "
-                "which objects Unity makes of them is not checked against a Unity-written file"
-            )
-        if "//" in node.path.removeprefix("//") or node.path.endswith("/"):
-            return (
-                "a node without name or id leads to its node "
-                f"{_shown(node.node)}, and what Unity names such a node is not checked"
-            )
-    return None
-
-
-def _shown(node: ColladaNode) -> str:
-    return f"{node.name or node.id!r} (line {node.location.line})"
-
-
-def _local_position(position: Vector3, turned: t.Quaternion) -> Vector3:
-    """Where ROS#'s ``SetParentAndAlign`` leaves the instance's root: at the model's root
-    position in world axes, under a parent turned by ``turned`` (the links above it, posed
-    before this link is), so in its parent's axes that position turned back."""
-    if position == (0.0, 0.0, 0.0):
-        return position
-    inverse = (-turned[0], -turned[1], -turned[2], turned[3])
-    x, y, z = (t.f32(v) + 0.0 for v in rotate(inverse, position))
-    return (x, y, z)
-
-
-def _saved_rotation(rotation: t.Quaternion) -> t.Quaternion:
-    """A rotation as the scene saves the instance root's: float32, with the sign of zero that
-    re-parenting leaves on x, y and z (-0: the r2d2 and UR3 scenes, ``unity.transforms``'s
-    ``ALIGNED``). What double arithmetic leaves of an exact 0 (below 1e-9) is 0, as Unity's
-    float arithmetic has it."""
-    x, y, z, w = (t.f32(v) if abs(v) >= 1e-9 else 0.0 for v in rotation)
-    return (x or -0.0, y or -0.0, z or -0.0, w)
+# How each mesh format's instance is made; any other suffix is refused (``urdf._unimported``).
+_FORMATS: dict[
+    str, Callable[[_Builder, Mesh, ResolvedMesh, t.Quaternion, bool], ModelInstance | None]
+] = {
+    ".stl": _Builder._stl,
+    ".dae": _Builder._collada,
+    ".obj": _Builder._obj,
+}
