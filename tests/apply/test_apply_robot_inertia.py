@@ -5,7 +5,8 @@ What the scene holds, derived from ROS#'s code (Runtime/Urdf/UrdfComponents/Urdf
 and Runtime/Urdf/Math/Matrix3x3.cs; the derivation is in tests/urdf/test_inertia.py): the
 moments are finite and below ``MinInertia``, so ``FixMinInertia`` raises each to 1e-6; the
 rotation is NaN in all four components, and ``UpdateRigidBodyData`` hands the same values to
-the Rigidbody. Unity writes a float NaN as ``NaN`` (docs/unity-yaml.md)."""
+the Rigidbody. Unity writes a float NaN as ``NaN`` (docs/unity-yaml.md). Apply says so in a
+note, since Unity's physics cannot simulate such a link."""
 
 from __future__ import annotations
 
@@ -32,5 +33,9 @@ def test_a_tensor_of_tiny_entries_imports_with_rossharps_minimum_moments_and_nan
     assert f"  m_InertiaRotation: {NAN}\n" in scene  # the Rigidbody
     assert f"  UrdfInertiaTensorRotation: {NAN}\n" in scene  # UrdfInertial
     assert f"  InertiaTensorRotation: {NAN}\n" in scene
+    assert (
+        "note: robot bot: link base's inertia tensor gives ROS#'s importer NaN inertia values, "
+        "as in Unity's editor" in run.out.replace("\n  ", " ")
+    )
     apply_writes_nothing(project)
     assert apply_robot(project, "", "--check").code == 0

@@ -186,7 +186,7 @@ def make_plan(
     notes = [*target_notes, *user.notes, *pruning.notes, *followed_notes(scenes)]
     notes += class_notes(code, registry, {c.path for c in changes if c.writes})
     notes += rosbridge2_notes(manifest, registry)
-    notes += [note for robot in robots for note in robot.imported.robot.notes]
+    notes += [note for robot in robots for note in robot.notes()]
     return Plan(
         manifest,
         changes,

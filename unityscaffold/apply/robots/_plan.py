@@ -7,6 +7,7 @@ The scene half (``_place``) places the same import into the robot's scene.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
@@ -16,7 +17,7 @@ from unityscaffold.errors import LocatedError, located_at
 from unityscaffold.fileout import DesiredFile
 from unityscaffold.manifest.model import Manifest
 from unityscaffold.manifest.robot_entry import RobotEntry
-from unityscaffold.unity import AssetRef
+from unityscaffold.unity import AssetRef, InlineMap
 from unityscaffold.unity.mesh import MESH_FILE_ID
 from unityscaffold.unity.meta import folder_meta, meta_guid, native_format_meta
 
@@ -44,6 +45,22 @@ class PlannedRobot:
     guids: dict[str, str]
     folders: tuple[str, ...] = ()  # the asset folders holding them, each with a .meta
 
+    def notes(self) -> list[str]:
+        """What the import warns of: the xacro's warnings, and each link whose inertia ROS#'s
+        float32 closed forms turn into NaN (``urdf._inertia``), which the import keeps, as
+        the editor's does, though Unity's physics cannot simulate such a link."""
+        found = list(self.imported.robot.notes)
+        for _, obj in self.imported.objects.walk():
+            if any(_not_finite(c.field(n)) for c in obj.components for n in _INERTIA):
+                found.append(
+                    f"robot {self.gameobject}: link {obj.name}'s inertia tensor gives ROS#'s "
+                    "importer NaN inertia values, as in Unity's editor (its float32 closed forms "
+                    "cannot diagonalize it); Unity's physics cannot simulate that link (see "
+                    "https://github.com/Unity-Technologies/Unity-Robotics-Hub/issues/343): give "
+                    "it a diagonal tensor or larger entries"
+                )
+        return found
+
     def asset_refs(self) -> dict[str, AssetRef]:
         """The native assets it writes (``.mat`` materials, Mesh ``.asset`` files) by project
         path, as a field refers to them: known from the plan, so that an ``objects:`` entry can
@@ -56,6 +73,15 @@ class PlannedRobot:
             )
             for relative in native
         }
+
+
+_INERTIA = ("m_InertiaTensor", "m_InertiaRotation")  # the Rigidbody's, from urdf._inertia
+
+
+def _not_finite(value: object) -> bool:
+    return isinstance(value, InlineMap) and not all(
+        isinstance(v, float | int) and math.isfinite(v) for _, v in value.items
+    )
 
 
 def plan_robots(manifest: Manifest, salt: str) -> list[PlannedRobot]:
