@@ -14,8 +14,10 @@ Where the values come from:
 - The ``.meta``: the 2022.3 ``ModelImporter`` layout of the r2d2 sample's ``.dae.meta``, with
   Unity's defaults for the four settings ROS#'s post-processor sets on a ``.dae`` only
   (``globalScale: 1``, ``importCameras: 1``, ``importLights: 1``, ``animationType: 2``), as
-  in the ``.obj.meta`` Unity wrote in github.com/Field-Robotics-Japan/UnitySensors at
-  66b5d7db, ``Packages/UnitySensors/Runtime/RawData/LivoxModels/mid-360.obj.meta``.
+  in the 2022.3 ``.obj.meta`` of a default import in github.com/Unity-Technologies/ml-agents at
+  d7b7509c, ``Project/Assets/3D-FUTURE-model/01fdf241-67bb-482c-844c-61e261b8d484/
+  normalized_model.obj.meta`` (the same settings, every one; it lacks the two empty
+  ``rigImport…`` lines of the r2d2 layout, which is kept).
 """
 
 from __future__ import annotations

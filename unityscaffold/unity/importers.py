@@ -10,10 +10,14 @@ compares with Unity's files). The text is laid out by the ``unity_meta/`` templa
 
 A model ROS#'s post-processor leaves alone (any but a ``.dae``: it returns at once for the
 rest) keeps Unity's defaults for the four settings it changes: ``globalScale: 1``,
-``importCameras: 1``, ``importLights: 1``, ``animationType: 2`` (Generic), as in the
-``.obj.meta`` Unity 2021.3 wrote for a default-imported model in github.com/Field-Robotics-Japan/
-UnitySensors (``Packages/UnitySensors/Runtime/RawData/LivoxModels/mid-360.obj.meta``); the rest
-is the 2022.3 layout above (``default_model_meta``).
+``importCameras: 1``, ``importLights: 1``, ``animationType: 2`` (Generic), the values of
+``.obj.meta`` files of default imports: a 2022.3 one (``serializedVersion: 22200``) in
+github.com/Unity-Technologies/ml-agents at d7b7509c (``Project/Assets/3D-FUTURE-model/01fdf241-
+67bb-482c-844c-61e261b8d484/normalized_model.obj.meta``), equal to ``default_model_meta`` in every
+setting, and a 2021.3 one in github.com/Field-Robotics-Japan/UnitySensors at 66b5d7db
+(``Packages/UnitySensors/Runtime/RawData/LivoxModels/mid-360.obj.meta``). The ml-agents file
+lacks the empty ``rigImportErrors``/``rigImportWarnings`` lines the r2d2 ``.meta`` holds; the
+r2d2 layout is kept (Unity reads both).
 """
 
 from __future__ import annotations
