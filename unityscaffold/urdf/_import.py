@@ -37,8 +37,9 @@ class RobotImport:
     ``models`` holds what each mesh geometry object (role ``MODEL``) is, by its key: the
     instance of a prefab or model to place there (``unity.prefabinstance``), whose source is
     one of ``model_assets``: the files that need the GUIDs of other assets to be written, or
-    are copies (the STL prefabs and the copied ``.dae`` files, ``urdf.models``; the textures,
-    ``urdf.textures``; and the ``.mat`` of each material of a texture, ``urdf.materials``).
+    are copies (the STL prefabs and the copied ``.dae`` and ``.obj`` files, ``urdf.models``;
+    the textures, ``urdf.textures``; and the ``.mat`` of each material of a texture,
+    ``urdf.materials``).
     """
 
     robot: Robot
