@@ -7,6 +7,7 @@ located error that writes nothing."""
 from __future__ import annotations
 
 import importlib.util
+import shutil
 import sys
 from pathlib import Path
 
@@ -16,6 +17,7 @@ from robot_helpers import (
     BOT_URDF,
     HEADER,
     ROBOTS,
+    apply,
     apply_manifest,
     apply_refused,
     apply_writes_nothing,
@@ -254,3 +256,19 @@ def test_env_without_its_variable_is_an_error_naming_the_env_key(project: Path) 
     ), run.err
     assert "hint: give it one in the entry: env: {P: <value>}" in run.err
     assert apply_manifest(project, MANIFEST + "    env: {P: p}\n").code == 0
+
+
+def test_a_find_left_in_the_urdf_keeps_the_project_portable(project: Path) -> None:
+    """TIAGo's and OpenManipulator's xacros put `$(find pkg)/config/….yaml` into a Gazebo
+    plugin, which ROS# keeps as the UrdfPlugin's text: with the checkout's own folder there, a
+    clone at another path (a teammate's, CI's) would see drift. It stays `$(find pkg)`."""
+    plugin = '<plugin name="p"><parameters>$(find bot_description)/config/c.yaml</parameters>'
+    (project / XACRO).write_text(MAIN.replace('<plugin name="p"/>', plugin + "</plugin>"))
+    assert apply_manifest(project, MANIFEST).code == 0
+    scene = (project / "Assets/Scenes/Main.unity").read_text()
+    assert "<parameters>$(find bot_description)/config/c.yaml</parameters>" in scene
+    assert str(project) not in scene
+    moved = project.parent / "elsewhere"
+    shutil.copytree(project, moved, symlinks=True)
+    check = apply(moved, "--check")
+    assert check.code == 0, check.out + check.err

@@ -149,3 +149,19 @@ def test_env_in_an_included_file_is_located_in_that_file(tmp_path: Path) -> None
         3,
         17,
     )
+
+
+def test_a_found_folder_left_in_the_urdf_is_written_back_as_find(tmp_path: Path) -> None:
+    """xacro answers `$(find pkg)` with the package's folder (to read what it includes); in
+    the URDF that folder becomes `$(find pkg)` again, where a path goes on or the text ends,
+    so the URDF is the same wherever the repository is. `desc2`, a longer name, is not cut."""
+    xacro = (
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"><visual>'
+        '<geometry><mesh filename="file://$(find desc)/m.stl"/></geometry></visual></link>'
+        "<gazebo><p>$(find desc)</p><q>$(find desc)2/x</q></gazebo></robot>"
+    )
+    root = build_tree(tmp_path, {"desc/r.urdf.xacro": xacro})
+    robot = read_urdf(root / "desc/r.urdf.xacro", packages={"desc": root / "desc"})
+    assert robot.links[0].visuals[0].geometry.filename == "file://$(find desc)/m.stl"  # type: ignore[union-attr]
+    (plugin,) = robot.plugins
+    assert "<p>$(find desc)</p>" in plugin.text and f"<q>{root}/desc2/x</q>" in plugin.text

@@ -72,7 +72,10 @@ def parse_filename(filename: str, urdf_folder: Path) -> InPackage | OnDisk | Ref
     if _DRIVE_RE.match(text):
         return _windows_drive()
     if scheme is not None and scheme[1].lower() == "file":
-        return _file_uri(text[scheme.end() :])
+        rest = text[scheme.end() :]
+        if rest.removeprefix("//").startswith("$(find "):  # a xacro's file://$(find pkg)/…
+            return parse_filename(rest.removeprefix("//"), urdf_folder)
+        return _file_uri(rest)
     if scheme is not None:
         return Refused(
             f"is a {scheme[1]}: URI, and only files in the repository are read",

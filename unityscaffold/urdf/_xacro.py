@@ -24,7 +24,7 @@ import io
 import re
 import xml.parsers.expat
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -88,7 +88,7 @@ def expand_xacro(
     warnings += [f"{path}: xacro says: {line}" for line in _stray_lines(stray.getvalue())]
     # laid out as the xacro command prints it, so a URDF error's line is that output's line
     urdf = bytes(document.toprettyxml(indent="  ", encoding="utf-8"))
-    return Expanded(urdf, tuple(dict.fromkeys(warnings)))
+    return Expanded(hooks.unfound(urdf), tuple(dict.fromkeys(warnings)))
 
 
 # What xacro prints after a warning to say where it was: the warning has its file already
@@ -116,6 +116,21 @@ class _Hooks:
 
     packages: Mapping[str, Path]
     env: Mapping[str, str]
+    # each package $(find) answered, with the folder it answered
+    found: dict[str, str] = field(default_factory=dict)
+
+    def unfound(self, urdf: bytes) -> bytes:
+        """``urdf`` with each folder ``$(find)`` answered written back as ``$(find pkg)``.
+
+        xacro needs the real folder to read what it includes or loads, but what it leaves of
+        it in the URDF (a plugin's parameter file, ``file://$(find pkg)/…`` meshes) would put
+        this checkout's place into the scene, so that a clone elsewhere (a teammate's, CI's)
+        would see drift. Written back, the URDF depends on the repository alone; the mesh
+        resolver reads ``$(find pkg)/…`` as the package's file."""
+        for package, folder in sorted(self.found.items(), key=lambda p: -len(p[1])):
+            pattern = re.escape(folder.encode()) + rb"(?=[/\\\s\"'<]|$)"
+            urdf = re.sub(pattern, f"$(find {package})".encode(), urdf)
+        return urdf
 
     def find(self, package: str) -> str:
         folder = self.packages.get(package)
@@ -127,6 +142,7 @@ class _Hooks:
                 hint=f"add {package}: <its folder, relative to the manifest> to `packages`",
                 pattern=rf"\$\(\s*find\s+{re.escape(package)}(?=[\s)])",
             )
+        self.found[package] = str(folder)
         return str(folder)
 
     def env_value(self, name: str) -> str:
