@@ -381,7 +381,12 @@ def dae_robot(tmp_path: Path, dae: str, part: str = "collision", material: str =
         (
             collada(NODE.format("n").replace("/>", "/><instance_geometry url='#g'/>")),
             "collision",
-            "its node 'n' (line 7) draws 2 geometries",
+            "its node 'n' (line 7) holds 2 geometries, cameras or lights",
+        ),
+        (
+            collada(NODE.format("n").replace("/>", "/><instance_camera url='#c'/>")),
+            "collision",
+            "its node 'n' (line 7) holds 2 geometries, cameras or lights",
         ),
         (
             collada("<node>" + NODE.format("a") + "</node><node>" + NODE.format("b") + "</node>"),
@@ -453,7 +458,7 @@ def test_a_material_on_a_model_whose_renderers_are_not_checked_is_refused_at_the
     message = refusal(urdf, tmp_path)
     assert message.startswith(
         f"{urdf}:2:54: error: model 'package://desc/m.dae' cannot take a <material> as ROS# "
-        "makes it: its node 'n' (line 7) draws 2 geometries"
+        "makes it: its node 'n' (line 7) holds 2 geometries, cameras or lights"
     ), message
     assert "hint: export the model with one geometry per node" in message
 

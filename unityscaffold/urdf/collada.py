@@ -40,7 +40,8 @@ _MAX_DEPTH = 64
 class ColladaNode:
     """A ``<node>`` of the visual scene: its ``name`` and ``id`` (empty when absent), how many
     geometries it instantiates, ``parts``: how many primitives (``<triangles>``, ``<polylist>``,
-    …) those geometries have in all, its child nodes (its own, then those it instantiates, in
+    …) those geometries have in all, ``others``: how many cameras, lights and controllers it
+    instantiates, its child nodes (its own, then those it instantiates, in
     document order), and ``matrix``: its own transform, every ``<translate>``, ``<rotate>``,
     ``<scale>``, ``<matrix>`` and ``<lookat>`` composed in order (``skew`` is kept apart:
     ``skewed``)."""
@@ -53,6 +54,8 @@ class ColladaNode:
     matrix: Matrix
     location: SourceLocation
     skewed: bool = False
+    # its other node attributes, as the FBX SDK counts them: cameras, lights, controllers
+    others: int = 0
 
     @property
     def has_children(self) -> bool:
@@ -201,6 +204,10 @@ class _Reader:
             matrix=matrix,
             location=self.source.at(node.offset),
             skewed=skewed,
+            others=sum(
+                len(node.elements(tag))
+                for tag in ("instance_camera", "instance_light", "instance_controller")
+            ),
         )
 
 

@@ -179,13 +179,18 @@ def rotate(q: t.Quaternion, v: Vector3) -> Vector3:
 
 def unchecked_objects(drawn: tuple[DrawnNode, ...]) -> str | None:
     """Why the objects of a model's drawn nodes do not follow from a rule seen in Unity's
-    files, if they do not: how the FBX SDK splits a node of several geometries into objects,
-    and what it names a node with neither name nor id, no Unity-written file here shows."""
+    files, if they do not. The FBX SDK, which reads COLLADA for Unity, keeps a node's first
+    attribute (geometry, camera, light or controller) on the node and makes a child node of
+    each further one (its ``FbxReaderCollada::ImportNode``, as its public header documents);
+    what it names those children no Unity-written file here shows, nor what Unity names a
+    node with neither name nor id."""
     for node in drawn:
-        if node.node.geometries > 1:
+        attributes = node.node.geometries + node.node.others
+        if attributes > 1:
             return (
-                f"its node {_shown(node.node)} draws {node.node.geometries} geometries, and "
-                "which objects Unity makes of them is not checked against a Unity-written file"
+                f"its node {_shown(node.node)} holds {attributes} geometries, cameras or "
+                "lights, of which the FBX SDK that reads it for Unity makes a child node each "
+                "but the first, under names no Unity-written file here shows"
             )
         if "//" in node.path.removeprefix("//") or node.path.endswith("/"):
             return (
