@@ -13,6 +13,8 @@ A robot is
 - unstable: imported, but the second apply wrote files or `--check` found drift (a bug too);
 - unportable: imported, but what apply wrote holds the project's absolute path, so a clone
   elsewhere sees drift (a bug too);
+- misshapen: imported, but the robot's object tree in the scene has another number of objects
+  than ROS#'s importer makes for its links, visuals and collisions (a bug too);
 - incomplete: refused only for files its checkout lacks but the upstream repository has
   (listed in ``<checkout>.missing`` beside the checkout, for a copy made without large files);
 - missing: its checkout is not in the folder (see --clone-commands).
@@ -327,7 +329,46 @@ def survey(robot: Robot, project: Path, env: dict[str, str], absent: set[str]) -
     if bound:
         verdict.status = "unportable"
         verdict.detail = "this machine's path of the project is written in:\n" + "\n".join(bound)
+        return verdict
+    wrong = misshapen(robot, project)
+    if wrong:
+        verdict.status, verdict.detail = "misshapen", wrong
     return verdict
+
+
+def misshapen(robot: Robot, project: Path) -> str:
+    """What is wrong with the robot's object tree in the scene, or nothing: ROS#'s importer
+    makes 2 + 3·links + 2·visuals + 2·collisions objects, the robot's own included (the robot
+    and its Plugins; per link its object, Visuals and Collisions; per visual or collision its
+    object and its geometry, a mesh's being its model's instance, whose objects are the model's)
+    (Editor/Urdf/UrdfComponents: UrdfRobot, UrdfLink, UrdfVisuals, UrdfCollisions)."""
+    from unityscaffold.unity import SceneDocument
+    from unityscaffold.urdf import read_urdf
+
+    folder = project / "ros"
+    packages = {name: folder / path for name, path in robot.packages.items()}
+    urdf = read_urdf(
+        folder / robot.urdf, packages=packages, xacro_args=robot.args, xacro_env=robot.env
+    )
+    visuals = sum(len(link.visuals) for link in urdf.links)
+    collisions = sum(len(link.collisions) for link in urdf.links)
+    expected = 2 + 3 * len(urdf.links) + 2 * visuals + 2 * collisions
+    scene = SceneDocument.load(project / SCENE)
+    roots = [root for root in scene.roots() if root.name == urdf.name]
+    if len(roots) != 1:
+        return f"{len(roots)} root objects named {urdf.name!r} in the scene, not 1"
+    count, below = 0, [roots[0]]
+    while below:
+        go = below.pop()
+        count += 1
+        if not go.is_prefab_instance:
+            below.extend(scene.children(go))
+    if count == expected:
+        return ""
+    return (
+        f"{count} objects under and with the robot, where ROS# makes {expected} "
+        f"(2 + 3·{len(urdf.links)} links + 2·{visuals} visuals + 2·{collisions} collisions)"
+    )
 
 
 def machine_bound(project: Path) -> list[str]:
@@ -432,6 +473,8 @@ def parse(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
+    # the scene and the URDF are read back with this tree's unityscaffold, as apply runs it
+    sys.path.insert(0, str(REPO))
     options = parse(argv)
     checkouts, robots = load_list(options.list)
     if options.clone_commands:
@@ -455,7 +498,8 @@ def main(argv: list[str] | None = None) -> int:
         print(json.dumps([asdict(v) for v in verdicts], indent=2))
     else:
         print("\n".join(summary(verdicts)))
-    return 1 if any(v.status in ("crashed", "unstable", "unportable") for v in verdicts) else 0
+    bugs = ("crashed", "unstable", "unportable", "misshapen")
+    return 1 if any(v.status in bugs for v in verdicts) else 0
 
 
 if __name__ == "__main__":
