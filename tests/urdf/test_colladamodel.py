@@ -15,10 +15,12 @@ Where the values come from:
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
 
+from unityscaffold.errors import LocatedError
 from unityscaffold.unity.modelids import model_file_id
 from unityscaffold.urdf._creation import saved_rotation
 from unityscaffold.urdf.collada import read_collada
@@ -163,3 +165,50 @@ def test_a_file_outside_collada_1_4_s_namespace_is_turned_as_ros_sharp_s_undefin
     facts = read_collada(path)
     assert (facts.up_axis, facts.ros_up_axis) == ("Z_UP", "undefined")
     assert pose(path) == ((0.0, 0.0, 0.0), (-0.5, 0.5, 0.5, 0.5))
+
+
+@pytest.mark.parametrize(
+    ("meter", "read"),
+    [
+        ("0.001", 0.001),
+        (" 1e-3 ", 0.001),
+        ("1,5", 15.0),  # C#'s AllowThousands: a group separator between whole digits
+        ("inf", 1.0),  # not a spelling float.Parse takes: ROS# falls back to 1
+        ("1_000", 1.0),  # Python's spelling, not C#'s
+        ("1e39", 1.0),  # past float32: Mono's OverflowException, caught by ROS#
+        ("cm", 1.0),
+    ],
+)
+def test_the_unit_is_read_as_ros_sharp_s_float_parse_reads_it(
+    tmp_path: Path, meter: str, read: float
+) -> None:
+    """``ColladaAssetPostProcessor.readGlobalScale``: ``float.Parse(str, InvariantCulture)``
+    in a try whose catch gives 1."""
+    path = dae(tmp_path, drawing("n"))
+    path.write_text(path.read_text().replace('meter="1"', f'meter="{meter}"'))
+    assert read_collada(path).meter == read
+
+
+@pytest.mark.parametrize(
+    "transform",
+    [
+        "<rotate>0 0 1 inf</rotate>",
+        "<translate>1e400 0 0</translate>",
+        "<translate>a 0 0</translate>",
+    ],
+)
+def test_a_transform_that_is_no_numbers_leaves_the_node_unposed(
+    tmp_path: Path, transform: str
+) -> None:
+    node = f'<node id="n" name="n">{transform}<instance_geometry url="#g"/></node>'
+    facts = read_collada(dae(tmp_path, node))
+    assert all(math.isnan(v) for v in facts.nodes[0].matrix)
+
+
+def test_a_node_instancing_a_node_it_lies_in_is_refused_at_the_instance(tmp_path: Path) -> None:
+    """Its tree would never end; a repeated instance (twice itself) would have hung apply."""
+    node = '<node id="a" name="a"><instance_node url="#a"/><instance_node url="#a"/></node>'
+    with pytest.raises(LocatedError) as caught:
+        read_collada(dae(tmp_path, node))
+    assert "<instance_node> names '#a', a node it lies in" in caught.value.render()
+    assert caught.value.location.line == 1

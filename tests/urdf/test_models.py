@@ -496,3 +496,25 @@ def test_a_malformed_collada_file_is_located_in_it(tmp_path: Path) -> None:
     message = refusal(urdf, tmp_path)
     assert message.startswith(f"{tmp_path / 'desc' / 'm.dae'}:1:")
     assert "malformed XML" in message and "hint: export the model again" in message
+
+
+def test_a_top_node_whose_transform_is_no_numbers_is_refused_in_the_model(tmp_path: Path) -> None:
+    """The one top node is the model's root, whose pose the scene records: an ``inf`` there
+    (which once ended apply in a traceback) is a located error in the model file."""
+    node = '<node id="n" name="n"><rotate>0 0 1 inf</rotate><instance_geometry url="#g"/></node>'
+    urdf = dae_robot(tmp_path, collada(node, geometries=GEOMETRY), "visual")
+    message = refusal(urdf, tmp_path)
+    assert message.startswith(f"{tmp_path / 'desc' / 'm.dae'}:7:1: error: model "), message
+    assert "its top node's transform is not numbers" in message
+
+
+def test_a_node_far_past_float32_s_range_imports_at_infinity_as_csharp_casts(
+    tmp_path: Path,
+) -> None:
+    """C#'s ``(float)`` of 1e39 is Infinity (once an OverflowError and a traceback here)."""
+    node = (
+        '<node id="n" name="n"><translate>1e39 0 0</translate><instance_geometry url="#g"/></node>'
+    )
+    urdf = dae_robot(tmp_path, collada(node, geometries=GEOMETRY), "visual")
+    (instance,) = import_robot(urdf, packages={}, project=tmp_path).models.values()
+    assert [c.value for c in instance.modifications[:3]] == ["-Infinity", "0", "0"]

@@ -154,7 +154,9 @@ def test_env_in_an_included_file_is_located_in_that_file(tmp_path: Path) -> None
 def test_a_found_folder_left_in_the_urdf_is_written_back_as_find(tmp_path: Path) -> None:
     """xacro answers `$(find pkg)` with the package's folder (to read what it includes); in
     the URDF that folder becomes `$(find pkg)` again, where a path goes on or the text ends,
-    so the URDF is the same wherever the repository is. `desc2`, a longer name, is not cut."""
+    so the URDF is the same wherever the repository is. `$(find desc)2/x` names a folder that
+    only starts with the package's, not the package: it is left as xacro wrote it (and, like
+    any absolute path a URDF names, ties the scene to this checkout's place)."""
     xacro = (
         '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"><visual>'
         '<geometry><mesh filename="file://$(find desc)/m.stl"/></geometry></visual></link>'

@@ -108,7 +108,7 @@ def _texts(r: Reader, m: YMap, key: str, name: str, example: str) -> tuple[tuple
         return ()
     found = []
     for item in entry.value.entries:
-        if key == "env" and not re.match(ENV_NAME, item.key):
+        if key == "env" and not re.fullmatch(ENV_NAME, item.key):
             r.error(
                 item.key_location,
                 f"invalid environment variable name '{item.key}'",

@@ -19,22 +19,13 @@ from __future__ import annotations
 
 import math
 
-from unityscaffold.urdf.transforms import Quaternion
-from unityscaffold.urdf.transforms import f32 as _cast
+from unityscaffold.urdf.transforms import Quaternion, f32
 
 __all__ = ["principal_axes"]
 
 Vec = tuple[float, float, float]
 Matrix = tuple[Vec, Vec, Vec]
 _IDENTITY_AXES: tuple[Vec, Vec, Vec] = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
-
-
-def f32(value: float) -> float:
-    """C#'s ``(float)``: the nearest float32, ±Infinity past its range."""
-    try:
-        return _cast(value)
-    except OverflowError:
-        return math.copysign(math.inf, value)
 
 
 def _div(a: float, b: float) -> float:

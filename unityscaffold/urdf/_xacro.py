@@ -27,6 +27,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, NoReturn
+from xml.sax.saxutils import escape
 
 from unityscaffold.errors import LocatedError, SourceLocation, UserError
 
@@ -128,8 +129,11 @@ class _Hooks:
         would see drift. Written back, the URDF depends on the repository alone; the mesh
         resolver reads ``$(find pkg)/…`` as the package's file."""
         for package, folder in sorted(self.found.items(), key=lambda p: -len(p[1])):
-            pattern = re.escape(folder.encode()) + rb"(?=[/\\\s\"'<]|$)"
-            urdf = re.sub(pattern, f"$(find {package})".encode(), urdf)
+            # as minidom writes it in text and in attributes (a folder with & < > or ")
+            spellings = (escape(folder), escape(folder, {'"': "&quot;"}))
+            for spelled in dict.fromkeys(spellings):
+                pattern = re.escape(spelled.encode()) + rb"(?=[/\\\s\"'<&]|$)"
+                urdf = re.sub(pattern, f"$(find {package})".encode(), urdf)
         return urdf
 
     def find(self, package: str) -> str:

@@ -13,7 +13,8 @@ Nothing else of the file is read.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 from unityscaffold.errors import LocatedError, SourceLocation, UserError
@@ -31,9 +32,12 @@ _TRANSFORMS = ("translate", "rotate", "scale", "matrix", "lookat", "skew")
 _PRIMITIVES = frozenset(
     ("lines", "linestrips", "polygons", "polylist", "triangles", "trifans", "tristrips")
 )
-# <instance_node> may name a node that instantiates itself; Unity's importer would not end
-# either, so the tree is cut at a depth no real model reaches
-_MAX_DEPTH = 64
+_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+# C#'s float.Parse(s, CultureInfo.InvariantCulture): Float | AllowThousands
+_CSHARP_FLOAT = re.compile(r"\s*([+-]?(?:\d[\d,]*\.?\d*|\.\d+))([eE][+-]?\d+)?\s*")
+_FLOAT_MAX = 3.4028234663852886e38
+# bounds on a tree <instance_node>s can multiply: far past any real model, short of a hang
+_MAX_DEPTH, _MAX_NODES = 256, 100_000
 
 
 @dataclass(frozen=True, slots=True)
@@ -118,7 +122,7 @@ def read_collada(path: Path) -> ColladaFacts:
     return ColladaFacts(
         _text(axis).strip() or "Y_UP",
         _meter(asset) if ros_reads else 1.0,
-        tuple(reader.node(node, 0) for node in _top_nodes(root)),
+        tuple(reader.node(node) for node in _top_nodes(root)),
         _images(root),
         _text(axis) if axis is not None and ros_reads else "undefined",
     )
@@ -131,12 +135,16 @@ def _text(element: Element | None) -> str:
 
 
 def _meter(asset: Element | None) -> float:
+    """The unit as ROS# reads it: ``float.Parse`` with the invariant culture (digits, a sign,
+    a point, an exponent, ``,`` between the whole digits), and 1 where that fails or
+    overflows (Mono's ``OverflowException``) or gives no finite number."""
     unit = asset.first("unit") if asset is not None else None
     value = unit.get("meter") if unit is not None else None
-    try:
-        return float(value) if value is not None else 1.0
-    except ValueError:  # ROS# falls back to 1 on anything it cannot parse
+    match = _CSHARP_FLOAT.fullmatch(value) if value is not None else None
+    if match is None:
         return 1.0
+    number = float(match.group(1).replace(",", "") + (match.group(2) or ""))
+    return number if math.isfinite(number) and abs(number) <= _FLOAT_MAX else 1.0
 
 
 def _top_nodes(root: Element) -> list[Element]:
@@ -182,16 +190,33 @@ class _Reader:
     source: XmlSource
     parts: dict[str, int]
     library: dict[str, Element]
+    count: list[int] = field(default_factory=list)  # every node read so far
 
-    def node(self, node: Element, depth: int) -> ColladaNode:
+    def node(self, node: Element, within: tuple[int, ...] = ()) -> ColladaNode:
+        """``node`` and the tree below it; ``within``: the nodes it lies in (by offset), where
+        an ``<instance_node>`` back to one of them would make the tree endless."""
         geometries = node.elements("instance_geometry")
-        children: list[ColladaNode] = []
-        if depth < _MAX_DEPTH:
-            children += [self.node(child, depth + 1) for child in node.elements("node")]
-            for instance in node.elements("instance_node"):
-                target = self.library.get((instance.get("url") or "").removeprefix("#"))
-                if target is not None:
-                    children.append(self.node(target, depth + 1))
+        inside = (*within, node.offset)
+        self.count.append(node.offset)
+        if len(inside) > _MAX_DEPTH or len(self.count) > _MAX_NODES:
+            raise LocatedError.at(
+                self.source.at(node.offset),
+                f"the model's tree goes deeper than {_MAX_DEPTH} nodes or holds more than "
+                f"{_MAX_NODES:,} (its <instance_node>s counted each time): no robot part does",
+                hint="export the model again, without nested instances",
+            )
+        children = [self.node(child, inside) for child in node.elements("node")]
+        for instance in node.elements("instance_node"):
+            target = self.library.get((instance.get("url") or "").removeprefix("#"))
+            if target is not None and target.offset in inside:
+                raise LocatedError.at(
+                    self.source.at(instance.offset),
+                    f"<instance_node> names {instance.get('url')!r}, a node it lies in: the "
+                    "model's tree would never end",
+                    hint="instantiate a node outside this one, or export the model again",
+                )
+            if target is not None:
+                children.append(self.node(target, inside))
         matrix, skewed = _matrix(node)
         return ColladaNode(
             name=node.get("name") or "",
@@ -285,10 +310,16 @@ def _multiply(a: Matrix, b: Matrix) -> Matrix:
 
 
 def _numbers(text: str) -> list[float]:
-    try:
-        return [float(word) for word in text.split()]
-    except ValueError:
-        return [math.nan]
+    """The decimal numbers of ``text`` (COLLADA's ``xs:double`` lists); one NaN if a word is
+    none, or no finite number (``inf``, ``1e400``), which the caller takes as a broken
+    transform."""
+    numbers = []
+    for word in text.split():
+        number = float(word) if _DECIMAL.fullmatch(word) else math.nan
+        if not math.isfinite(number):
+            return [math.nan]
+        numbers.append(number)
+    return numbers
 
 
 def _images(root: Element) -> tuple[PurePosixPath, ...]:

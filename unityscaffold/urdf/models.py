@@ -39,6 +39,7 @@ and textures Unity imports with another importer than its TextureImporter
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
@@ -286,6 +287,15 @@ class _Builder:
         self, mesh: Mesh, resolved: ResolvedMesh, turned: t.Quaternion, *, collision: bool
     ) -> ModelInstance | None:
         facts = self._facts(resolved.path)
+        if len(facts.nodes) == 1 and any(math.isnan(v) for v in facts.nodes[0].matrix):
+            # the one top node is the model's root, whose pose the scene holds
+            self.sink.error(
+                facts.nodes[0].location,
+                f"model {mesh.filename!r}: its top node's transform is not numbers",
+                hint="each <matrix>, <translate>, <rotate>, <scale> and <lookat> holds only "
+                "decimal numbers, as many as COLLADA says",
+            )
+            return None
         path = str(PurePosixPath(resolved.package) / resolved.relative)
         self.assets.setdefault(path, ModelAsset(path, resolved.path, global_scale=facts.meter))
         self._textures(mesh, resolved, facts)

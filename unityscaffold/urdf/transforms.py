@@ -36,8 +36,12 @@ ALIGNED: Quaternion = (-0.0, -0.0, -0.0, 1.0)
 
 
 def f32(value: float) -> float:
-    """``value`` rounded to the nearest float32 (C#'s ``(float)`` cast)."""
-    result: float = struct.unpack("<f", struct.pack("<f", value))[0]
+    """``value`` rounded to the nearest float32 (C#'s ``(float)`` cast), ±Infinity past its
+    range as C#'s is (a model's unit or a node's place can be that large)."""
+    try:
+        result: float = struct.unpack("<f", struct.pack("<f", value))[0]
+    except OverflowError:
+        return math.copysign(math.inf, value)
     return result
 
 

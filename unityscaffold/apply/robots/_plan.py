@@ -54,8 +54,9 @@ class PlannedRobot:
             if any(_not_finite(c.field(n)) for c in obj.components for n in _INERTIA):
                 found.append(
                     f"robot {self.gameobject}: link {obj.name}'s inertia tensor gives ROS#'s "
-                    "importer NaN inertia values, as in Unity's editor (its float32 closed forms "
-                    "cannot diagonalize it); Unity's physics cannot simulate that link (see "
+                    "importer NaN or infinite inertia values, as in Unity's editor (its "
+                    "float32 closed forms cannot diagonalize it); Unity's physics cannot "
+                    "simulate that link (see "
                     "https://github.com/Unity-Technologies/Unity-Robotics-Hub/issues/343): give "
                     "it a diagonal tensor or larger entries"
                 )
