@@ -56,6 +56,11 @@ class Documents:
         """The documents in file order (a live view: edit through the methods below)."""
         return self._docs
 
+    def scene_roots(self) -> Doc | None:
+        """The scene's SceneRoots document (the last one: Unity writes it at the end), which
+        lists its root Transforms since 2022.2; None in a file of an earlier layout."""
+        return next((d for d in reversed(self._docs) if d.class_id == SCENE_ROOTS_CLASS), None)
+
     @property
     def changed(self) -> Set[int]:
         """fileIDs of the documents inserted, edited or removed since loading."""

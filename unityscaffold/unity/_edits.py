@@ -20,7 +20,7 @@ from unityscaffold.unity._builders import (
     new_rect_transform,
     new_transform,
 )
-from unityscaffold.unity._classids import SCENE_ROOTS_CLASS, TRANSFORM_CLASSES
+from unityscaffold.unity._classids import TRANSFORM_CLASSES
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._emit import emit_field, value_equals
 from unityscaffold.unity._fileids import stable_file_id
@@ -233,7 +233,8 @@ def _create(
 
 
 def _append_scene_root(docs: Documents, file_id: int) -> None:
-    roots_doc = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
+    roots_doc = docs.scene_roots()
+    assert roots_doc is not None  # the caller checked the era
     T.append_list_item(roots_doc, "m_Roots", f"  - {{fileID: {file_id}}}")
     docs.touch(roots_doc)
 
@@ -357,7 +358,7 @@ def remove_empty_gameobject(docs: Documents, go_id: int) -> bool:
     if F.list_refs(transform, "m_Children"):
         return False
     father = docs.get(F.ref_value(transform, "m_Father") or 0)
-    roots = next((d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS), None)
+    roots = docs.scene_roots()
     holders = {go.file_id, transform.file_id}
     allowed = {id(go), id(transform), id(father), id(roots)}
     for other in docs.in_order:

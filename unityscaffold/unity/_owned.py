@@ -15,7 +15,6 @@ from unityscaffold.unity._builders import (
     new_monobehaviour,
     new_transform,
 )
-from unityscaffold.unity._classids import SCENE_ROOTS_CLASS
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._edits import (
     _emit,
@@ -140,8 +139,8 @@ def _father(docs: Documents, obj: OwnedObject, tr: Doc) -> None:
             T.append_list_item(father, "m_Children", f"  - {{fileID: {obj.transform_id}}}")
             docs.touch(father)
         return
-    roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
-    if obj.transform_id not in F.list_refs(roots, "m_Roots"):
+    roots = docs.scene_roots()
+    if roots is not None and obj.transform_id not in F.list_refs(roots, "m_Roots"):
         T.append_list_item(roots, "m_Roots", f"  - {{fileID: {obj.transform_id}}}")
         docs.touch(roots)
 
@@ -155,8 +154,8 @@ def _leave(docs: Documents, father: int | None, transform_id: int) -> None:
         if old is not None and T.remove_list_item(old, "m_Children", transform_id):
             docs.touch(old)
         return
-    roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
-    if T.remove_list_item(roots, "m_Roots", transform_id):
+    roots = docs.scene_roots()
+    if roots is not None and T.remove_list_item(roots, "m_Roots", transform_id):
         docs.touch(roots)
 
 

@@ -13,7 +13,6 @@ from collections.abc import Mapping
 from unityscaffold.errors import UserError
 from unityscaffold.unity import _fields as F
 from unityscaffold.unity import _textops as T
-from unityscaffold.unity._classids import SCENE_ROOTS_CLASS
 from unityscaffold.unity._documents import Documents
 from unityscaffold.unity._split import Doc
 
@@ -54,7 +53,8 @@ def place_siblings(docs: Documents, parent: int | None, wanted: Mapping[int, int
         transform_id = hierarchy.nodes[parent].transform_id
         changed = _permute(docs, docs.require(transform_id or 0), "m_Children", current, order)
     elif docs.era.scene_roots:
-        roots = next(d for d in reversed(docs.in_order) if d.class_id == SCENE_ROOTS_CLASS)
+        roots = docs.scene_roots()
+        assert roots is not None  # the era has one
         changed = _permute(docs, roots, "m_Roots", current, order)
     if docs.era.root_order:
         changed = _number(docs, order) or changed
