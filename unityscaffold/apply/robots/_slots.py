@@ -37,7 +37,9 @@ Slot = tuple[str, str]  # (the object's key, the role)
 class Slots:
     """The fileIDs of one robot's slots for one run. ``before``: every fileID the lock has
     for the robot; ``kept``: the lock's kept fileIDs by ``"<identity> <role>"`` (or, from an
-    earlier version, ``"<key> <role>"``)."""
+    earlier version, ``"<key> <role>"``). Not frozen, unlike the model's values: it is the
+    run's ledger, ``ids``, ``used`` and ``taken`` filled as slots are asked for, so that no
+    two slots get one fileID."""
 
     robot: str  # the robot's GameObject path
     links: Mapping[str, str]  # a link's key -> its identity
