@@ -250,14 +250,17 @@ def group_errors(output: str, absent: set[str]) -> dict[str, list[str]]:
 
 
 def absent_files(robot: Robot, root: Path, project: Path) -> set[str]:
-    """The files of the robot's checkouts that ``<root>/<checkout>.missing`` lists (a checkout
-    made from a snapshot without its large files), as paths in ``project``."""
+    """The files of the robot's packages (and its URDF's folder) that
+    ``<root>/<checkout>.missing`` lists (a checkout made from a snapshot without its large
+    files), as paths in ``project``."""
+    folders = [*robot.packages.values(), os.path.dirname(robot.urdf)]
+    mine = tuple(os.path.normpath(f"{project}/ros/{folder}") + os.sep for folder in folders)
     found = set()
     for name in robot.checkouts():
         listing = root / f"{name}.missing"
         if listing.is_file():
-            lines = listing.read_text().splitlines()
-            found |= {str(project / "ros" / name / line) for line in lines if line}
+            paths = (str(project / "ros" / name / line) for line in listing.read_text().split())
+            found |= {path for path in paths if path.startswith(mine)}
     return found
 
 
