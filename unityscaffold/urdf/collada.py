@@ -75,10 +75,6 @@ class ColladaNode:
             return True
         return any(m[4 * r + c] for r in range(3) for c in range(3) if r != c)
 
-    def walk(self) -> tuple[ColladaNode, ...]:
-        """This node and every node below it, depth first, in document order."""
-        return (self, *(n for child in self.children for n in child.walk()))
-
 
 @dataclass(frozen=True, slots=True)
 class ColladaFacts:
